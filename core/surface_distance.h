@@ -1,0 +1,20 @@
+// Point-to-surface distances between polygon meshes (polygons fan-triangulated), used for
+// parity checks against Blender. Exact closest-point queries, brute force over triangles:
+// meant for test-sized meshes (up to some 10^4 faces).
+#pragma once
+
+#include "core/mesh.h"
+
+namespace opgraph {
+
+// Largest distance from the sample points of `from` (vertices, edge midpoints, face centroids
+// and 4 seeded random points per triangle) to the surface of `to`.
+double MaxPointToSurfaceDistance(const Mesh& from, const Mesh& to);
+
+// max(MaxPointToSurfaceDistance(a, b), MaxPointToSurfaceDistance(b, a)) divided by the
+// bounding-box diagonal of `a`.
+double SymmetricSurfaceDistanceRelative(const Mesh& a, const Mesh& b);
+
+double BoundingBoxDiagonal(const Mesh& mesh);
+
+}  // namespace opgraph

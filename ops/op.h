@@ -1,0 +1,97 @@
+// An operation of the design sequence: a topology pass (discrete choices, run once per choice on
+// double positions) and a geometry pass templated on the scalar type, so ceres::Jet
+// differentiates it. Each op also owns its JSON form and its Blender export.
+#pragma once
+
+#include <ceres/jet.h>
+
+#include <memory>
+#include <string>
+#include <vector>
+
+#include "core/mesh.h"
+#include "ops/params.h"
+
+namespace opgraph {
+
+constexpr int kJetDim = 4;
+using JetT = ceres::Jet<double, kJetDim>;
+
+// One continuous parameter: its name (as in derivative reports), its bounds for optimisation,
+// and the value at which the op is the identity (used by the gate).
+struct ParamSpec {
+  std::string name;
+  double lower;
+  double upper;
+  double identity;
+};
+
+class Op {
+ public:
+  virtual ~Op() = default;
+  virtual std::string Name() const = 0;
+
+  const std::vector<ParamSpec>& specs() const { return specs_; }
+  const std::vector<double>& params() const { return params_; }
+  std::vector<double>& mutable_params() { return params_; }
+
+  // Topology pass on the op's input. Resolves discrete choices and fixes the output topology.
+  // Throws FieldError when a target does not exist on `input`.
+  virtual void Prepare(const Mesh& input) = 0;
+  const std::vector<Polygon>& output_faces() const { return output_faces_; }
+  int num_output_vertices() const { return num_output_vertices_; }
+
+  // Geometry pass. `params` has specs().size() entries; `gate` in [0, 1] blends the op toward
+  // the identity (0: the input surface unchanged, in the op's output topology; 1: the full op).
+  // `in` holds the input positions (the topology given to Prepare); `out` gets
+  // num_output_vertices() positions.
+  virtual void Evaluate(const double* params, const double& gate, const Positions<double>& in,
+                        Positions<double>* out) const = 0;
+  virtual void Evaluate(const JetT* params, const JetT& gate, const Positions<JetT>& in,
+                        Positions<JetT>* out) const = 0;
+
+  // The "params" object of sequence.json.
+  virtual Json ParamsToJson() const = 0;
+  // Python statements applying the op to the object `obj` in rebuild_blender.py, using the
+  // helpers of ops/blender_export.h.
+  virtual std::string BlenderCode() const = 0;
+
+ protected:
+  void AddParam(const std::string& name, double lower, double upper, double identity,
+                double value) {
+    specs_.push_back({name, lower, upper, identity});
+    params_.push_back(value);
+  }
+  // For ops whose topology is the input's.
+  void KeepTopology(const Mesh& input) {
+    output_faces_ = input.faces;
+    num_output_vertices_ = input.NumVertices();
+  }
+
+  std::vector<ParamSpec> specs_;
+  std::vector<double> params_;
+  std::vector<Polygon> output_faces_;
+  int num_output_vertices_ = 0;
+};
+
+// Forwards both Evaluate overloads to Derived::Apply<T>.
+template <class Derived>
+class OpBase : public Op {
+ public:
+  void Evaluate(const double* params, const double& gate, const Positions<double>& in,
+                Positions<double>* out) const final {
+    static_cast<const Derived*>(this)->Apply(params, gate, in, out);
+  }
+  void Evaluate(const JetT* params, const JetT& gate, const Positions<JetT>& in,
+                Positions<JetT>* out) const final {
+    static_cast<const Derived*>(this)->Apply(params, gate, in, out);
+  }
+};
+
+// Creates an op from its canonical name and "params" object. Throws FieldError on bad
+// parameters and std::invalid_argument on an unknown name.
+std::unique_ptr<Op> CreateOp(const std::string& name, const Json& params);
+// Canonical names of all implemented ops.
+std::vector<std::string> OpNames();
+
+}  // namespace opgraph

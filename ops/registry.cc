@@ -1,0 +1,40 @@
+// The table of implemented operations: canonical name -> factory.
+#include <functional>
+#include <map>
+#include <stdexcept>
+
+#include "ops/global_affine.h"
+#include "ops/op.h"
+
+namespace opgraph {
+namespace {
+
+using Factory = std::function<std::unique_ptr<Op>(const Json&)>;
+
+const std::map<std::string, Factory>& Factories() {
+  static const std::map<std::string, Factory> factories = {
+      {"GlobalAffineRotate",
+       [](const Json& p) { return std::make_unique<GlobalAffineOp>(GlobalAffineOp::Kind::kRotate, p); }},
+      {"GlobalAffineScale",
+       [](const Json& p) { return std::make_unique<GlobalAffineOp>(GlobalAffineOp::Kind::kScale, p); }},
+      {"GlobalAffineTranslate",
+       [](const Json& p) { return std::make_unique<GlobalAffineOp>(GlobalAffineOp::Kind::kTranslate, p); }},
+  };
+  return factories;
+}
+
+}  // namespace
+
+std::unique_ptr<Op> CreateOp(const std::string& name, const Json& params) {
+  const auto it = Factories().find(name);
+  if (it == Factories().end()) throw std::invalid_argument("unknown op '" + name.substr(0, 40) + "'");
+  return it->second(params);
+}
+
+std::vector<std::string> OpNames() {
+  std::vector<std::string> names;
+  for (const auto& entry : Factories()) names.push_back(entry.first);
+  return names;
+}
+
+}  // namespace opgraph

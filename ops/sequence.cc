@@ -1,0 +1,185 @@
+#include "ops/sequence.h"
+
+#include <fstream>
+#include <sstream>
+
+namespace opgraph {
+
+namespace {
+
+std::string OpLabel(size_t index, const std::string& name) {
+  return "operation " + std::to_string(index) + " (" + name.substr(0, 40) + ")";
+}
+
+}  // namespace
+
+Sequence ParseSequence(const Json& document) {
+  Sequence sequence;
+  if (!document.is_object()) throw SequenceError("sequence: top level must be a JSON object");
+  if (document.contains("version")) {
+    const Json& v = document["version"];
+    if (!v.is_number_integer() || v.get<int>() != kSequenceFormatVersion) {
+      throw SequenceError("sequence: field 'version': unsupported (this build reads version " +
+                          std::to_string(kSequenceFormatVersion) + ")");
+    }
+  }
+  if (document.contains("start")) {
+    try {
+      ParamReader start(document["start"]);
+      start.Word("primitive", {"cube"});
+      sequence.start_size = start.Number("size", 1e-6, 1e6, 2.0);
+      start.Finish();
+    } catch (const FieldError& e) {
+      throw SequenceError("sequence: start: field '" + e.field() + "': " + e.what());
+    }
+  }
+  if (!document.contains("operations") || !document["operations"].is_array()) {
+    throw SequenceError("sequence: field 'operations': missing or not an array");
+  }
+  const Json& operations = document["operations"];
+  for (size_t i = 0; i < operations.size(); ++i) {
+    const Json& entry = operations[i];
+    if (!entry.is_object() || !entry.contains("op") || !entry["op"].is_string()) {
+      throw SequenceError(OpLabel(i, "?") + ": field 'op': missing or not a string");
+    }
+    const std::string name = entry["op"].get<std::string>();
+    try {
+      for (auto it = entry.begin(); it != entry.end(); ++it) {
+        if (it.key() != "op" && it.key() != "params" && it.key() != "gate") {
+          throw FieldError(it.key().substr(0, 40), "unknown field");
+        }
+      }
+      const Json params = entry.contains("params") ? entry["params"] : Json::object();
+      sequence.ops.push_back(CreateOp(name, params));
+      sequence.gates.push_back(entry.contains("gate") ? CheckedNumber(entry["gate"], "gate", 0, 1) : 1.0);
+    } catch (const FieldError& e) {
+      throw SequenceError(OpLabel(i, name) + ": field '" + e.field() + "': " + e.what());
+    } catch (const std::invalid_argument& e) {
+      throw SequenceError(OpLabel(i, name) + ": field 'op': " + e.what());
+    }
+  }
+  return sequence;
+}
+
+Sequence LoadSequence(const std::string& path) {
+  std::ifstream in(path);
+  if (!in) throw SequenceError(path + ": cannot open file");
+  Json document;
+  try {
+    document = Json::parse(in);
+  } catch (const Json::parse_error& e) {
+    std::string what = e.what();
+    throw SequenceError(path + ": invalid JSON: " + what.substr(what.find(']') + 2));
+  }
+  return ParseSequence(document);
+}
+
+Json SequenceToJson(const Sequence& sequence) {
+  Json ops = Json::array();
+  for (size_t i = 0; i < sequence.ops.size(); ++i) {
+    Json entry = {{"op", sequence.ops[i]->Name()}, {"params", sequence.ops[i]->ParamsToJson()}};
+    if (sequence.gates[i] != 1.0) entry["gate"] = sequence.gates[i];
+    ops.push_back(entry);
+  }
+  return {{"format", "opgraph-sequence"},
+          {"version", kSequenceFormatVersion},
+          {"start", {{"primitive", "cube"}, {"size", sequence.start_size}}},
+          {"operations", ops}};
+}
+
+std::vector<Mesh> EvaluateSequence(Sequence* sequence) {
+  std::vector<Mesh> steps;
+  Mesh current = sequence->StartMesh();
+  for (size_t i = 0; i < sequence->ops.size(); ++i) {
+    Op& op = *sequence->ops[i];
+    Mesh next;
+    try {
+      op.Prepare(current);
+    } catch (const FieldError& e) {
+      throw SequenceError(OpLabel(i, op.Name()) + ": field '" + e.field() + "': " + e.what());
+    }
+    op.Evaluate(op.params().data(), sequence->gates[i], current.vertices, &next.vertices);
+    next.faces = op.output_faces();
+    const std::string problem = next.Validate();
+    if (!problem.empty()) throw SequenceError(OpLabel(i, op.Name()) + ": result invalid: " + problem);
+    steps.push_back(next);
+    current = std::move(next);
+  }
+  return steps;
+}
+
+namespace {
+
+// Helpers shared by every op's Blender code.
+const char* kBlenderPreamble = R"PY(# Rebuilds an opgraph design sequence with Blender's own operators and modifiers.
+# Usage: blender -b --factory-startup --python-exit-code 1 -P rebuild_blender.py -- OUT.obj
+# Writes the evaluated mesh to OUT.obj in Blender's frame (+Z up, no axis conversion).
+import os
+import sys
+
+import bmesh
+import bpy
+from mathutils import Euler, Matrix, Vector
+
+
+def new_object(size):
+    for o in list(bpy.data.objects):
+        bpy.data.objects.remove(o, do_unlink=True)
+    me = bpy.data.meshes.new('opgraph')
+    bm = bmesh.new()
+    bmesh.ops.create_cube(bm, size=size)
+    bm.to_mesh(me)
+    bm.free()
+    obj = bpy.data.objects.new('opgraph', me)
+    bpy.context.scene.collection.objects.link(obj)
+    bpy.context.view_layer.objects.active = obj
+    return obj
+
+
+def edit_mesh(obj):
+    """Mesh data for a destructive edit: pending modifiers are applied first."""
+    if len(obj.modifiers):
+        dg = bpy.context.evaluated_depsgraph_get()
+        me = bpy.data.meshes.new_from_object(obj.evaluated_get(dg))
+        obj.modifiers.clear()
+        old = obj.data
+        obj.data = me
+        bpy.data.meshes.remove(old)
+    return obj.data
+
+
+def export_obj(obj, path):
+    dg = bpy.context.evaluated_depsgraph_get()
+    me = obj.evaluated_get(dg).to_mesh()
+    lines = ['# opgraph rebuild_blender.py, Blender %s' % bpy.app.version_string]
+    lines += ['v %.9g %.9g %.9g' % tuple(v.co) for v in me.vertices]
+    lines += ['f ' + ' '.join(str(i + 1) for i in p.vertices) for p in me.polygons]
+    tmp = path + '.tmp'
+    with open(tmp, 'w') as f:
+        f.write('\n'.join(lines) + '\n')
+    os.replace(tmp, path)
+
+
+argv = sys.argv[sys.argv.index('--') + 1:] if '--' in sys.argv else []
+if len(argv) != 1:
+    sys.exit('usage: blender -b --factory-startup --python-exit-code 1 -P rebuild_blender.py -- OUT.obj')
+)PY";
+
+}  // namespace
+
+std::string BlenderScript(const Sequence& sequence) {
+  std::ostringstream script;
+  script << kBlenderPreamble << "\nobj = new_object(" << Py(sequence.start_size) << ")\n";
+  for (size_t i = 0; i < sequence.ops.size(); ++i) {
+    const Op& op = *sequence.ops[i];
+    script << "\n# " << i << ": " << op.Name() << "\n";
+    if (sequence.gates[i] != 1.0) {
+      throw SequenceError(OpLabel(i, op.Name()) + ": field 'gate': Blender export needs gate 1 (run the fitter's finalisation first)");
+    }
+    script << op.BlenderCode();
+  }
+  script << "\nexport_obj(obj, argv[0])\n";
+  return script.str();
+}
+
+}  // namespace opgraph

@@ -1,0 +1,38 @@
+// A design sequence: the start primitive and the ordered operations, with their gates.
+// File format: docs/sequence-format.md.
+#pragma once
+
+#include <memory>
+#include <string>
+#include <vector>
+
+#include "core/mesh.h"
+#include "ops/op.h"
+
+namespace opgraph {
+
+constexpr int kSequenceFormatVersion = 1;
+
+struct Sequence {
+  double start_size = 2.0;  // Blender's default cube
+  std::vector<std::unique_ptr<Op>> ops;
+  std::vector<double> gates;  // one per op, in [0, 1]
+
+  Mesh StartMesh() const { return MakeCube(start_size); }
+};
+
+// Parses a sequence document. Throws SequenceError with a one-line message naming the
+// operation index and field.
+Sequence ParseSequence(const Json& document);
+Sequence LoadSequence(const std::string& path);
+Json SequenceToJson(const Sequence& sequence);
+
+// Runs every op's topology and geometry pass with doubles. Returns the mesh after each step
+// (#ops entries). Throws SequenceError when a target does not exist at its step or the result
+// is not finite.
+std::vector<Mesh> EvaluateSequence(Sequence* sequence);
+
+// The Python script that rebuilds the sequence in Blender (contract: docs/sequence-format.md).
+std::string BlenderScript(const Sequence& sequence);
+
+}  // namespace opgraph

@@ -1,0 +1,14 @@
+#!/usr/bin/env bash
+# Installs every build, test and runtime dependency of opgraph from Debian packages.
+set -euo pipefail
+SUDO=""
+if [ "$(id -u)" != 0 ]; then SUDO=sudo; fi
+export DEBIAN_FRONTEND=noninteractive
+$SUDO apt-get update -qq
+$SUDO apt-get install -y -qq --no-install-recommends \
+  build-essential cmake ninja-build ccache pkg-config \
+  libceres-dev libeigen3-dev libgflags-dev libgoogle-glog-dev \
+  libosd-dev libcgal-dev libgmp-dev libmpfr-dev libboost-dev \
+  nlohmann-json3-dev libnanoflann-dev \
+  libgtest-dev libgmock-dev libbenchmark-dev \
+  blender python3 >/dev/null

@@ -1,0 +1,40 @@
+#include "tests/gt_convert.h"
+
+#include <algorithm>
+#include <fstream>
+
+#include "ops/op.h"
+
+namespace opgraph {
+
+Json ConvertGtSequence(const std::filesystem::path& path, std::string* why_not) {
+  std::ifstream in(path);
+  const Json gt = Json::parse(in);
+  const std::vector<std::string> implemented = OpNames();
+  Json operations = Json::array();
+  for (const Json& entry : gt.at("operations")) {
+    const std::string name = entry.at("op");
+    const Json& p = entry.at("params");
+    if (std::find(implemented.begin(), implemented.end(), name) == implemented.end()) {
+      *why_not = "op " + name + " not implemented yet";
+      return nullptr;
+    }
+    Json params;
+    if (name == "GlobalAffineScale" || name == "GlobalAffineRotate" || name == "GlobalAffineTranslate") {
+      if (p.contains("pivot") && p["pivot"] != Json::array({0.0, 0.0, 0.0})) {
+        *why_not = name + " about a pivot other than the origin";
+        return nullptr;
+      }
+      if (name == "GlobalAffineScale") params = {{"scale", p.at("scale")}};
+      if (name == "GlobalAffineRotate") params = {{"rotation_deg", p.at("rotation_deg")}};
+      if (name == "GlobalAffineTranslate") params = {{"offset", p.at("offset")}};
+    } else {
+      *why_not = "no converter for " + name + " yet";
+      return nullptr;
+    }
+    operations.push_back({{"op", name}, {"params", params}});
+  }
+  return {{"version", 1}, {"start", {{"primitive", "cube"}, {"size", 2.0}}}, {"operations", operations}};
+}
+
+}  // namespace opgraph

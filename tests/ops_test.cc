@@ -1,0 +1,247 @@
+// Operation engine tests: Jet derivatives against central finite differences, the gate's
+// identity at 0, Blender parity (real Blender replays rebuild_blender.py), Blender-built
+// gt-dev references, and bad-input handling of apply_sequence.
+#include <gtest/gtest.h>
+
+#include <cstdlib>
+#include <filesystem>
+#include <fstream>
+#include <random>
+#include <sstream>
+#include <sys/wait.h>
+#include <sstream>
+#include <sys/wait.h>
+
+#include "core/geometry.h"
+#include "core/obj_io.h"
+#include "core/surface_distance.h"
+#include "ops/sequence.h"
+#include "tests/gt_convert.h"
+
+namespace opgraph {
+namespace {
+
+namespace fs = std::filesystem;
+
+std::vector<std::string> ParityCases() {
+  std::vector<std::string> names;
+  for (const auto& entry : fs::directory_iterator(std::string(OPGRAPH_SOURCE_DIR) + "/tests/data/parity")) {
+    if (entry.path().extension() == ".json") names.push_back(entry.path().stem().string());
+  }
+  std::sort(names.begin(), names.end());
+  return names;
+}
+
+std::string ParityPath(const std::string& name) {
+  return std::string(OPGRAPH_SOURCE_DIR) + "/tests/data/parity/" + name + ".json";
+}
+
+// Inputs of every op of a sequence (the start mesh, then each step's result).
+std::vector<Mesh> OpInputs(Sequence* sequence) {
+  std::vector<Mesh> inputs = {sequence->StartMesh()};
+  std::vector<Mesh> steps = EvaluateSequence(sequence);
+  inputs.insert(inputs.end(), steps.begin(), steps.end() - (steps.empty() ? 0 : 1));
+  return inputs;
+}
+
+class ParityCase : public ::testing::TestWithParam<std::string> {};
+
+// Jet derivatives of the output positions with respect to every continuous parameter and the
+// gate agree with central differences, at random parameters near the sequence's and on
+// randomly perturbed inputs.
+TEST_P(ParityCase, JetDerivativesMatchFiniteDifferences) {
+  Sequence sequence = LoadSequence(ParityPath(GetParam()));
+  const std::vector<Mesh> inputs = OpInputs(&sequence);
+  std::mt19937 rng(42);
+  std::uniform_real_distribution<double> unit(-1, 1);
+  for (size_t i = 0; i < sequence.ops.size(); ++i) {
+    Op& op = *sequence.ops[i];
+    op.Prepare(inputs[i]);
+    const int n = static_cast<int>(op.params().size()) + 1;  // parameters, then the gate
+    for (int trial = 0; trial < 3; ++trial) {
+      std::vector<double> x(n);
+      for (int k = 0; k + 1 < n; ++k) {
+        const ParamSpec& s = op.specs()[k];
+        x[k] = std::clamp(op.params()[k] * (1 + 0.1 * unit(rng)) + 0.05 * unit(rng), s.lower, s.upper);
+      }
+      x[n - 1] = 0.6 + 0.3 * unit(rng);
+      Positions<double> input = inputs[i].vertices;
+      for (Vec3d& v : input) v += 1e-3 * Vec3d(unit(rng), unit(rng), unit(rng));
+
+      auto eval = [&](const std::vector<double>& xs) {
+        Positions<double> out;
+        op.Evaluate(xs.data(), xs[n - 1], input, &out);
+        return out;
+      };
+      const Positions<JetT> input_jet = CastPositions<JetT>(input);
+      for (int start = 0; start < n; start += kJetDim) {
+        std::vector<JetT> xj(n);
+        for (int k = 0; k < n; ++k) {
+          xj[k] = JetT(x[k]);
+          if (k >= start && k < start + kJetDim) xj[k].v[k - start] = 1;
+        }
+        Positions<JetT> out_jet;
+        op.Evaluate(xj.data(), xj[n - 1], input_jet, &out_jet);
+        for (int k = start; k < std::min(n, start + kJetDim); ++k) {
+          const double h = 1e-6 * std::max(1.0, std::abs(x[k]));
+          std::vector<double> xp = x, xm = x;
+          xp[k] += h;
+          xm[k] -= h;
+          const Positions<double> op_plus = eval(xp), op_minus = eval(xm);
+          double diff = 0, norm = 0;
+          for (size_t v = 0; v < out_jet.size(); ++v) {
+            for (int c = 0; c < 3; ++c) {
+              const double fd = (op_plus[v][c] - op_minus[v][c]) / (2 * h);
+              const double jet = out_jet[v][c].v[k - start];
+              diff += (fd - jet) * (fd - jet);
+              norm += jet * jet;
+            }
+          }
+          const std::string name = k + 1 < n ? op.specs()[k].name : "gate";
+          EXPECT_LT(std::sqrt(diff), 1e-5 * std::max(std::sqrt(norm), 1e-3))
+              << "op " << i << " " << op.Name() << " parameter " << name << " trial " << trial;
+        }
+      }
+    }
+  }
+}
+
+// Gate 0 reproduces the op's input surface exactly (in the op's output topology).
+TEST_P(ParityCase, GateZeroIsIdentity) {
+  Sequence sequence = LoadSequence(ParityPath(GetParam()));
+  const std::vector<Mesh> inputs = OpInputs(&sequence);
+  for (size_t i = 0; i < sequence.ops.size(); ++i) {
+    Op& op = *sequence.ops[i];
+    op.Prepare(inputs[i]);
+    Mesh out;
+    op.Evaluate(op.params().data(), 0.0, inputs[i].vertices, &out.vertices);
+    out.faces = op.output_faces();
+    EXPECT_LT(SymmetricSurfaceDistanceRelative(inputs[i], out), 1e-12) << "op " << i << " " << op.Name();
+  }
+}
+
+std::string Quote(const std::string& s) { return "'" + s + "'"; }
+
+// Runs rebuild_blender.py in real Blender; returns the mesh Blender built.
+Mesh RunBlender(const std::string& script, const std::string& out_obj) {
+  const std::string log = out_obj + ".log";
+  const std::string command = "blender -b --factory-startup --python-exit-code 1 -P " + Quote(script) +
+                              " -- " + Quote(out_obj) + " > " + Quote(log) + " 2>&1";
+  const int status = std::system(command.c_str());
+  if (status != 0) {
+    std::ifstream in(log);
+    std::stringstream text;
+    text << in.rdbuf();
+    throw std::runtime_error("blender failed (" + command + "):\n" + text.str());
+  }
+  return ReadObj(out_obj);
+}
+
+// Real Blender replaying our rebuild_blender.py builds the mesh we computed.
+TEST_P(ParityCase, BlenderRebuildMatches) {
+  const fs::path dir = fs::temp_directory_path() / ("opgraph_parity_" + GetParam());
+  fs::remove_all(dir);
+  const std::string command = std::string(OPGRAPH_APPLY_SEQUENCE) + " " + Quote(ParityPath(GetParam())) +
+                              " --out " + Quote(dir.string()) + " > /dev/null";
+  ASSERT_EQ(std::system(command.c_str()), 0) << command;
+  const Mesh ours = ReadObj((dir / "result.obj").string());
+  const Mesh blender = RunBlender((dir / "rebuild_blender.py").string(), (dir / "blender.obj").string());
+  const double distance = SymmetricSurfaceDistanceRelative(blender, ours);
+  RecordProperty("relative_distance", std::to_string(distance));
+  EXPECT_LT(distance, 1e-6);
+  EXPECT_EQ(ours.NumVertices(), blender.NumVertices());
+  EXPECT_EQ(ours.NumFaces(), blender.NumFaces());
+  fs::remove_all(dir);
+}
+
+INSTANTIATE_TEST_SUITE_P(Sequences, ParityCase, ::testing::ValuesIn(ParityCases()));
+
+// The Blender-built references of ../shared/data/gt-dev evaluate to their model.obj.
+TEST(GtDev, SequencesReproduceBlenderModels) {
+  const fs::path root = fs::path(OPGRAPH_SOURCE_DIR) / ".." / "shared" / "data" / "gt-dev";
+  ASSERT_TRUE(fs::exists(root)) << root;
+  int checked = 0;
+  for (const auto& entry : fs::directory_iterator(root)) {
+    const std::string name = entry.path().filename().string();
+    std::string why_not;
+    const Json converted = ConvertGtSequence(entry.path() / "sequence.json", &why_not);
+    if (!why_not.empty()) {
+      std::cout << "[gt-dev] " << name << ": not compared: " << why_not << "\n";
+      continue;
+    }
+    Sequence sequence = ParseSequence(converted);
+    const std::vector<Mesh> steps = EvaluateSequence(&sequence);
+    const Mesh reference = ReadObj((entry.path() / "model.obj").string());
+    const Mesh& ours = steps.back();
+    const double distance = SymmetricSurfaceDistanceRelative(reference, ours);
+    std::cout << "[gt-dev] " << name << ": relative distance " << distance << ", vertices "
+              << ours.NumVertices() << " vs " << reference.NumVertices() << "\n";
+    EXPECT_LT(distance, 1e-6) << name;
+    EXPECT_EQ(ours.NumVertices(), reference.NumVertices()) << name;
+    EXPECT_EQ(ours.NumFaces(), reference.NumFaces()) << name;
+    ++checked;
+  }
+  std::cout << "[gt-dev] compared " << checked << " models\n";
+}
+
+// Bad input: one line naming the problem, exit code 2, nothing written.
+struct BadInput {
+  const char* name;
+  const char* text;
+  const char* expected;  // substring of the error line
+};
+
+void PrintTo(const BadInput& bad, std::ostream* os) { *os << bad.name; }
+
+class BadSequence : public ::testing::TestWithParam<BadInput> {};
+
+TEST_P(BadSequence, FailsWithOneLineAndWritesNothing) {
+  const BadInput& bad = GetParam();
+  const fs::path dir = fs::temp_directory_path() / (std::string("opgraph_bad_") + bad.name);
+  fs::remove_all(dir);
+  fs::create_directories(dir);
+  const fs::path seq = dir / "seq.json";
+  if (std::string(bad.name) != "missing_file") std::ofstream(seq) << bad.text;
+  const fs::path out = dir / "out";
+  const fs::path err = dir / "stderr.txt";
+  const std::string command = std::string(OPGRAPH_APPLY_SEQUENCE) + " " + Quote(seq.string()) + " --out " +
+                              Quote(out.string()) + " 2> " + Quote(err.string());
+  const int status = std::system(command.c_str());
+  ASSERT_TRUE(WIFEXITED(status));
+  EXPECT_EQ(WEXITSTATUS(status), 2);
+  EXPECT_FALSE(fs::exists(out));
+  std::ifstream in(err);
+  std::string line, extra;
+  std::getline(in, line);
+  EXPECT_FALSE(std::getline(in, extra)) << "more than one line: " << extra;
+  EXPECT_NE(line.find(bad.expected), std::string::npos) << line;
+  fs::remove_all(dir);
+}
+
+INSTANTIATE_TEST_SUITE_P(
+    Errors, BadSequence,
+    ::testing::Values(
+        BadInput{"missing_file", "", "cannot open file"},
+        BadInput{"empty_file", "", "invalid JSON"},
+        BadInput{"invalid_json", "{\"operations\": [", "invalid JSON"},
+        BadInput{"not_object", "[1, 2]", "top level must be a JSON object"},
+        BadInput{"unknown_op", R"({"operations": [{"op": "Explode", "params": {}}]})",
+                 "operation 0 (Explode): field 'op': unknown op"},
+        BadInput{"missing_param", R"({"operations": [{"op": "GlobalAffineScale", "params": {}}]})",
+                 "operation 0 (GlobalAffineScale): field 'scale': missing"},
+        BadInput{"out_of_range",
+                 R"({"operations": [{"op": "GlobalAffineTranslate", "params": {"offset": [0, 0, 0]}},
+                                    {"op": "GlobalAffineScale", "params": {"scale": [1, 0, 1]}}]})",
+                 "operation 1 (GlobalAffineScale): field 'scale[1]': must not be zero"},
+        BadInput{"infinite", R"({"operations": [{"op": "GlobalAffineTranslate", "params": {"offset": [1e999, 0, 0]}}]})",
+                 "number overflow"},
+        BadInput{"wrong_type", R"({"operations": [{"op": "GlobalAffineRotate", "params": {"rotation_deg": "import os"}}]})",
+                 "operation 0 (GlobalAffineRotate): field 'rotation_deg': must be an array of 3 numbers"},
+        BadInput{"unknown_param", R"({"operations": [{"op": "GlobalAffineTranslate", "params": {"offset": [0, 0, 0], "code": "x"}}]})",
+                 "operation 0 (GlobalAffineTranslate): field 'code': unknown parameter"},
+        BadInput{"bad_gate", R"({"operations": [{"op": "GlobalAffineTranslate", "params": {"offset": [0, 0, 0]}, "gate": 2}]})",
+                 "operation 0 (GlobalAffineTranslate): field 'gate'"}),
+    [](const ::testing::TestParamInfo<BadInput>& info) { return std::string(info.param.name); });
+
+}  // namespace
+}  // namespace opgraph
