@@ -50,14 +50,12 @@ std::vector<Vec3d> SamplePoints(const Mesh& mesh) {
   std::mt19937 rng(7);
   std::uniform_real_distribution<double> u(0, 1);
   for (const Polygon& f : mesh.faces) {
-    Vec3d c = Vec3d::Zero();
     for (size_t i = 0; i < f.size(); ++i) {
-      c += mesh.vertices[f[i]];
       points.push_back(0.5 * (mesh.vertices[f[i]] + mesh.vertices[f[(i + 1) % f.size()]]));
     }
-    points.push_back(c / static_cast<double>(f.size()));
   }
   for (const Triangle& t : Triangulate(mesh)) {
+    points.push_back((t.a + t.b + t.c) / 3);
     for (int k = 0; k < 4; ++k) {
       double r1 = u(rng), r2 = u(rng);
       if (r1 + r2 > 1) r1 = 1 - r1, r2 = 1 - r2;

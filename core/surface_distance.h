@@ -7,8 +7,9 @@
 
 namespace opgraph {
 
-// Largest distance from the sample points of `from` (vertices, edge midpoints, face centroids
-// and 4 seeded random points per triangle) to the surface of `to`.
+// Largest distance from the sample points of `from` (vertices, edge midpoints, and the
+// centroid and 4 seeded random points of each fan triangle, so non-planar polygons are
+// sampled on the surface they are compared as) to the surface of `to`.
 double MaxPointToSurfaceDistance(const Mesh& from, const Mesh& to);
 
 // max(MaxPointToSurfaceDistance(a, b), MaxPointToSurfaceDistance(b, a)) divided by the

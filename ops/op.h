@@ -17,6 +17,11 @@ namespace opgraph {
 constexpr int kJetDim = 4;
 using JetT = ceres::Jet<double, kJetDim>;
 
+// The value part of a double or Jet (for branch decisions that must not depend on derivatives).
+inline double Scalar(double x) { return x; }
+template <int N>
+double Scalar(const ceres::Jet<double, N>& x) { return x.a; }
+
 // One continuous parameter: its name (as in derivative reports), its bounds for optimisation,
 // and the value at which the op is the identity (used by the gate).
 struct ParamSpec {

@@ -5,6 +5,8 @@
 
 #include "ops/global_affine.h"
 #include "ops/op.h"
+#include "ops/subdivision.h"
+#include "ops/simple_deform.h"
 
 namespace opgraph {
 namespace {
@@ -17,8 +19,17 @@ const std::map<std::string, Factory>& Factories() {
        [](const Json& p) { return std::make_unique<GlobalAffineOp>(GlobalAffineOp::Kind::kRotate, p); }},
       {"GlobalAffineScale",
        [](const Json& p) { return std::make_unique<GlobalAffineOp>(GlobalAffineOp::Kind::kScale, p); }},
+      {"Subdivision", [](const Json& p) { return std::make_unique<SubdivisionOp>(p); }},
       {"GlobalAffineTranslate",
        [](const Json& p) { return std::make_unique<GlobalAffineOp>(GlobalAffineOp::Kind::kTranslate, p); }},
+      {"SimpleDeformTwist",
+       [](const Json& p) { return std::make_unique<SimpleDeformOp>(SimpleDeformOp::Mode::kTwist, p); }},
+      {"SimpleDeformBend",
+       [](const Json& p) { return std::make_unique<SimpleDeformOp>(SimpleDeformOp::Mode::kBend, p); }},
+      {"SimpleDeformTaper",
+       [](const Json& p) { return std::make_unique<SimpleDeformOp>(SimpleDeformOp::Mode::kTaper, p); }},
+      {"SimpleDeformStretch",
+       [](const Json& p) { return std::make_unique<SimpleDeformOp>(SimpleDeformOp::Mode::kStretch, p); }},
   };
   return factories;
 }

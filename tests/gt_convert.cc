@@ -28,6 +28,13 @@ Json ConvertGtSequence(const std::filesystem::path& path, std::string* why_not) 
       if (name == "GlobalAffineScale") params = {{"scale", p.at("scale")}};
       if (name == "GlobalAffineRotate") params = {{"rotation_deg", p.at("rotation_deg")}};
       if (name == "GlobalAffineTranslate") params = {{"offset", p.at("offset")}};
+    } else if (name == "Subdivision") {
+      if (p.value("type", std::string("CATMULL_CLARK")) != "CATMULL_CLARK" ||
+          !p.value("use_limit_surface", true) || p.value("boundary_smooth", std::string("ALL")) != "ALL") {
+        *why_not = "Subdivision other than Catmull-Clark with limit surface and boundary_smooth ALL";
+        return nullptr;
+      }
+      params = {{"levels", p.at("levels")}};
     } else {
       *why_not = "no converter for " + name + " yet";
       return nullptr;

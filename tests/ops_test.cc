@@ -154,7 +154,8 @@ TEST_P(ParityCase, BlenderRebuildMatches) {
   fs::remove_all(dir);
 }
 
-INSTANTIATE_TEST_SUITE_P(Sequences, ParityCase, ::testing::ValuesIn(ParityCases()));
+INSTANTIATE_TEST_SUITE_P(Sequences, ParityCase, ::testing::ValuesIn(ParityCases()),
+                         [](const ::testing::TestParamInfo<std::string>& info) { return info.param; });
 
 // The Blender-built references of ../shared/data/gt-dev evaluate to their model.obj.
 TEST(GtDev, SequencesReproduceBlenderModels) {

@@ -1,0 +1,146 @@
+#include "ops/subdivision.h"
+
+#include <opensubdiv/far/primvarRefiner.h>
+#include <opensubdiv/far/topologyDescriptor.h>
+#include <opensubdiv/far/topologyRefinerFactory.h>
+
+#include <map>
+#include <memory>
+
+namespace opgraph {
+namespace {
+
+using OpenSubdiv::Far::PrimvarRefinerReal;
+using OpenSubdiv::Far::TopologyDescriptor;
+using OpenSubdiv::Far::TopologyRefiner;
+using OpenSubdiv::Far::TopologyRefinerFactory;
+namespace Sdc = OpenSubdiv::Sdc;
+
+// A primvar that is a sparse combination of the input vertices, so that running OpenSubdiv's
+// own interpolation on it yields the exact refinement weights.
+struct SparseWeights {
+  std::map<int, double> terms;
+  void Clear(void* = nullptr) { terms.clear(); }
+  void AddWithWeight(const SparseWeights& src, double weight) {
+    for (const auto& term : src.terms) terms[term.first] += weight * term.second;
+  }
+};
+
+std::unique_ptr<TopologyRefiner> RefineUniformly(const Mesh& input, Sdc::SchemeType scheme, int levels) {
+  std::vector<int> counts, indices;
+  for (const Polygon& face : input.faces) {
+    counts.push_back(static_cast<int>(face.size()));
+    indices.insert(indices.end(), face.begin(), face.end());
+  }
+  TopologyDescriptor descriptor;
+  descriptor.numVertices = input.NumVertices();
+  descriptor.numFaces = input.NumFaces();
+  descriptor.numVertsPerFace = counts.data();
+  descriptor.vertIndicesPerFace = indices.data();
+
+  Sdc::Options options;
+  options.SetVtxBoundaryInterpolation(Sdc::Options::VTX_BOUNDARY_EDGE_ONLY);
+  options.SetCreasingMethod(Sdc::Options::CREASE_UNIFORM);
+  using Factory = TopologyRefinerFactory<TopologyDescriptor>;
+  std::unique_ptr<TopologyRefiner> refiner(
+      Factory::Create(descriptor, Factory::Options(scheme, options)));
+  if (!refiner) throw FieldError("levels", "OpenSubdiv cannot build the input topology");
+  TopologyRefiner::UniformOptions uniform(levels);
+  uniform.fullTopologyInLastLevel = true;
+  refiner->RefineUniform(uniform);
+  return refiner;
+}
+
+// Weights of the last level's vertices (pushed to the limit when `limit`) on the input vertices.
+std::vector<SparseWeights> RefinementWeights(const TopologyRefiner& refiner, int num_inputs, bool limit) {
+  std::vector<SparseWeights> current(num_inputs);
+  for (int v = 0; v < num_inputs; ++v) current[v].terms[v] = 1.0;
+  const PrimvarRefinerReal<double> primvar(refiner);
+  for (int level = 1; level <= refiner.GetMaxLevel(); ++level) {
+    std::vector<SparseWeights> next(refiner.GetLevel(level).GetNumVertices());
+    primvar.Interpolate(level, current, next);
+    current = std::move(next);
+  }
+  if (!limit) return current;
+  std::vector<SparseWeights> limited(current.size());
+  primvar.Limit(current, limited);
+  return limited;
+}
+
+}  // namespace
+
+SubdivisionOp::SubdivisionOp(const Json& params) {
+  ParamReader reader(params);
+  levels_ = reader.Integer("levels", 1, 6);
+  reader.Finish();
+  AddParam("level_blend", 0, 1, 0, 1);
+}
+
+void SubdivisionOp::Prepare(const Mesh& input) {
+  if (input.faces.empty()) throw FieldError("levels", "the input mesh has no faces");
+  num_input_vertices_ = input.NumVertices();
+  const std::unique_ptr<TopologyRefiner> catmark = RefineUniformly(input, Sdc::SCHEME_CATMARK, levels_);
+  const std::unique_ptr<TopologyRefiner> bilinear = RefineUniformly(input, Sdc::SCHEME_BILINEAR, levels_);
+  const auto& last = catmark->GetLevel(levels_);
+  const auto& last_bilinear = bilinear->GetLevel(levels_);
+  // Both schemes split every face into quads in the same order; check it rather than assume.
+  bool same = last.GetNumVertices() == last_bilinear.GetNumVertices() &&
+              last.GetNumFaces() == last_bilinear.GetNumFaces();
+  output_faces_.assign(last.GetNumFaces(), Polygon());
+  for (int f = 0; same && f < last.GetNumFaces(); ++f) {
+    const auto verts = last.GetFaceVertices(f);
+    const auto verts_bilinear = last_bilinear.GetFaceVertices(f);
+    same = verts.size() == verts_bilinear.size();
+    for (int k = 0; same && k < verts.size(); ++k) {
+      same = verts[k] == verts_bilinear[k];
+      output_faces_[f].push_back(verts[k]);
+    }
+  }
+  if (!same) throw FieldError("levels", "internal: bilinear and Catmull-Clark refinements differ");
+  num_output_vertices_ = last.GetNumVertices();
+
+  const std::vector<SparseWeights> limit = RefinementWeights(*catmark, num_input_vertices_, true);
+  const std::vector<SparseWeights> linear = RefinementWeights(*bilinear, num_input_vertices_, false);
+  rows_.assign(num_output_vertices_, {});
+  for (int i = 0; i < num_output_vertices_; ++i) {
+    std::map<int, std::pair<double, double>> merged;
+    for (const auto& term : linear[i].terms) merged[term.first].first += term.second;
+    for (const auto& term : limit[i].terms) merged[term.first].second += term.second;
+    for (const auto& term : merged) rows_[i].push_back({term.first, term.second.first, term.second.second});
+  }
+}
+
+template <typename T>
+void SubdivisionOp::Apply(const T* p, const T& gate, const Positions<T>& in, Positions<T>* out) const {
+  const T t = gate * p[0];
+  out->assign(rows_.size(), Vec3<T>::Zero());
+  for (size_t i = 0; i < rows_.size(); ++i) {
+    Vec3<T> linear = Vec3<T>::Zero(), delta = Vec3<T>::Zero();
+    for (const Term& term : rows_[i]) {
+      linear += term.bilinear * in[term.index];
+      delta += (term.limit - term.bilinear) * in[term.index];
+    }
+    (*out)[i] = linear + t * delta;
+  }
+}
+
+template void SubdivisionOp::Apply<double>(const double*, const double&, const Positions<double>&,
+                                           Positions<double>*) const;
+template void SubdivisionOp::Apply<JetT>(const JetT*, const JetT&, const Positions<JetT>&,
+                                         Positions<JetT>*) const;
+
+Json SubdivisionOp::ParamsToJson() const { return {{"levels", levels_}}; }
+
+std::string SubdivisionOp::BlenderCode() const {
+  const std::string n = std::to_string(levels_);
+  return "m = obj.modifiers.new(" + PyWord("Subdivision") + ", " + PyWord("SUBSURF") + ")\n" +
+         "m.subdivision_type = " + PyWord("CATMULL_CLARK") + "\n" +
+         "m.levels = " + n + "\n" +
+         "m.render_levels = " + n + "\n" +
+         "m.quality = 3\n" +
+         "m.use_limit_surface = " + PyBool(true) + "\n" +
+         "m.boundary_smooth = " + PyWord("ALL") + "\n" +
+         "m.use_creases = " + PyBool(true) + "\n";
+}
+
+}  // namespace opgraph
