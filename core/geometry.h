@@ -1,6 +1,7 @@
 // Small geometric helpers templated on the scalar type (double or ceres::Jet).
 #pragma once
 
+#include <Eigen/Geometry>
 #include <cmath>
 
 #include "core/mesh.h"

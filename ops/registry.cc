@@ -4,7 +4,9 @@
 #include <stdexcept>
 
 #include "ops/global_affine.h"
+#include "ops/edge_loop_affine.h"
 #include "ops/op.h"
+#include "ops/vertex_displace.h"
 #include "ops/subdivision.h"
 #include "ops/simple_deform.h"
 
@@ -30,6 +32,13 @@ const std::map<std::string, Factory>& Factories() {
        [](const Json& p) { return std::make_unique<SimpleDeformOp>(SimpleDeformOp::Mode::kTaper, p); }},
       {"SimpleDeformStretch",
        [](const Json& p) { return std::make_unique<SimpleDeformOp>(SimpleDeformOp::Mode::kStretch, p); }},
+      {"VertexDisplace", [](const Json& p) { return std::make_unique<VertexDisplaceOp>(p); }},
+      {"EdgeLoopAffineRotate",
+       [](const Json& p) { return std::make_unique<EdgeLoopAffineOp>(EdgeLoopAffineOp::Kind::kRotate, p); }},
+      {"EdgeLoopAffineScale",
+       [](const Json& p) { return std::make_unique<EdgeLoopAffineOp>(EdgeLoopAffineOp::Kind::kScale, p); }},
+      {"EdgeLoopAffineTranslate",
+       [](const Json& p) { return std::make_unique<EdgeLoopAffineOp>(EdgeLoopAffineOp::Kind::kTranslate, p); }},
   };
   return factories;
 }

@@ -35,6 +35,18 @@ Json ConvertGtSequence(const std::filesystem::path& path, std::string* why_not) 
         return nullptr;
       }
       params = {{"levels", p.at("levels")}};
+    } else if (name == "VertexDisplace") {
+      params["groups"] = Json::array();
+      for (const Json& g : p.at("groups")) params["groups"].push_back({{"verts", g.at("verts")}, {"offset", g.at("offset")}});
+    } else if (name.rfind("EdgeLoopAffine", 0) == 0) {
+      if (p.value("pivot", "median") != "median") {
+        *why_not = name + " about a pivot other than the median";
+        return nullptr;
+      }
+      params["verts"] = p.at("verts");
+      for (const char* key : {"scale", "rotation_deg", "offset"}) {
+        if (p.contains(key)) params[key] = p.at(key);
+      }
     } else {
       *why_not = "no converter for " + name + " yet";
       return nullptr;

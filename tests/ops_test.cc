@@ -106,7 +106,22 @@ TEST_P(ParityCase, JetDerivativesMatchFiniteDifferences) {
   }
 }
 
-// Gate 0 reproduces the op's input surface exactly (in the op's output topology).
+// Largest distance of a polygon's vertices from the plane through its centroid with its
+// Newell normal: how far its bilinear surface can depart from its fan triangulation.
+double MaxNonPlanarity(const Mesh& mesh) {
+  double worst = 0;
+  for (const Polygon& f : mesh.faces) {
+    const Vec3d n = FaceAreaNormal(mesh.vertices, f).normalized();
+    const Vec3d c = FaceCentroid(mesh.vertices, f);
+    for (int v : f) worst = std::max(worst, std::abs(n.dot(mesh.vertices[v] - c)));
+  }
+  return worst;
+}
+
+// Gate 0 reproduces the op's input surface exactly (in the op's output topology). The one
+// surface-definition caveat: Subdivision at gate 0 is the bilinear (midpoint) refinement, which
+// lies on each quad's bilinear patch; for non-planar quads that departs from the fan
+// triangulation the distance is measured on by at most the quad's non-planarity.
 TEST_P(ParityCase, GateZeroIsIdentity) {
   Sequence sequence = LoadSequence(ParityPath(GetParam()));
   const std::vector<Mesh> inputs = OpInputs(&sequence);
@@ -116,7 +131,9 @@ TEST_P(ParityCase, GateZeroIsIdentity) {
     Mesh out;
     op.Evaluate(op.params().data(), 0.0, inputs[i].vertices, &out.vertices);
     out.faces = op.output_faces();
-    EXPECT_LT(SymmetricSurfaceDistanceRelative(inputs[i], out), 1e-12) << "op " << i << " " << op.Name();
+    const double tolerance =
+        1e-12 + (op.Name() == "Subdivision" ? MaxNonPlanarity(inputs[i]) / BoundingBoxDiagonal(inputs[i]) : 0);
+    EXPECT_LT(SymmetricSurfaceDistanceRelative(inputs[i], out), tolerance) << "op " << i << " " << op.Name();
   }
 }
 

@@ -1,0 +1,100 @@
+#include "ops/vertex_selector.h"
+
+namespace opgraph {
+
+const char* kVertexSelectorPython = R"PY(
+def select_verts(me, lo, hi, indices, expect):
+    if indices is not None:
+        found = [i for i in indices if i < len(me.vertices)]
+    else:
+        found = [v.index for v in me.vertices
+                 if all((lo[k] is None or v.co[k] >= lo[k]) and (hi[k] is None or v.co[k] <= hi[k])
+                        for k in range(3))]
+    if not found or (expect >= 0 and len(found) != expect):
+        sys.exit('vertex selection found %d vertices, expected %d' % (len(found), expect))
+    return found
+)PY";
+
+VertexSelector::VertexSelector(const Json& json, const std::string& field) : field_(field) {
+  if (!json.is_object()) throw FieldError(field, "must be an object with 'box' or 'indices'");
+  for (auto it = json.begin(); it != json.end(); ++it) {
+    if (it.key() != "box" && it.key() != "indices" && it.key() != "expect") {
+      throw FieldError(field + "." + it.key().substr(0, 40), "unknown key");
+    }
+  }
+  if (json.contains("indices")) {
+    const Json& list = json["indices"];
+    if (!list.is_array() || list.empty()) throw FieldError(field + ".indices", "must be a non-empty array");
+    for (const Json& i : list) {
+      indices_.push_back(static_cast<int>(CheckedNumber(i, field + ".indices", 0, 1e9)));
+    }
+  } else if (json.contains("box")) {
+    const Json& box = json["box"];
+    if (!box.is_array() || box.size() != 2 || !box[0].is_array() || box[0].size() != 3 ||
+        !box[1].is_array() || box[1].size() != 3) {
+      throw FieldError(field + ".box", "must be [[xmin, ymin, zmin], [xmax, ymax, zmax]] (null = unbounded)");
+    }
+    for (int k = 0; k < 3; ++k) {
+      if (!box[0][k].is_null()) lo_[k] = CheckedNumber(box[0][k], field + ".box", -1e9, 1e9);
+      if (!box[1][k].is_null()) hi_[k] = CheckedNumber(box[1][k], field + ".box", -1e9, 1e9);
+    }
+  } else {
+    throw FieldError(field, "needs 'box' or 'indices'");
+  }
+  if (json.contains("expect")) expect_ = static_cast<int>(CheckedNumber(json["expect"], field + ".expect", 1, 1e9));
+}
+
+std::vector<int> VertexSelector::Resolve(const Mesh& mesh) const {
+  std::vector<int> found;
+  if (!indices_.empty()) {
+    for (int i : indices_) {
+      if (i >= mesh.NumVertices()) throw FieldError(field_, "vertex " + std::to_string(i) + " does not exist at this step");
+      found.push_back(i);
+    }
+  } else {
+    for (int v = 0; v < mesh.NumVertices(); ++v) {
+      bool inside = true;
+      for (int k = 0; k < 3; ++k) {
+        if (lo_[k] && mesh.vertices[v][k] < *lo_[k]) inside = false;
+        if (hi_[k] && mesh.vertices[v][k] > *hi_[k]) inside = false;
+      }
+      if (inside) found.push_back(v);
+    }
+  }
+  if (found.empty()) throw FieldError(field_, "selects no vertex at this step");
+  if (expect_ >= 0 && static_cast<int>(found.size()) != expect_) {
+    throw FieldError(field_, "selects " + std::to_string(found.size()) + " vertices, expected " + std::to_string(expect_));
+  }
+  return found;
+}
+
+Json VertexSelector::ToJson() const {
+  Json j;
+  if (!indices_.empty()) {
+    j["indices"] = indices_;
+  } else {
+    Json lo = Json::array(), hi = Json::array();
+    for (int k = 0; k < 3; ++k) {
+      lo.push_back(lo_[k] ? Json(*lo_[k]) : Json(nullptr));
+      hi.push_back(hi_[k] ? Json(*hi_[k]) : Json(nullptr));
+    }
+    j["box"] = {lo, hi};
+  }
+  if (expect_ >= 0) j["expect"] = expect_;
+  return j;
+}
+
+std::string VertexSelector::PythonExpr(const std::string& mesh_var) const {
+  auto bound = [](const std::optional<double>& b) { return b ? Py(*b) : std::string("None"); };
+  std::string lo = "(" + bound(lo_[0]) + ", " + bound(lo_[1]) + ", " + bound(lo_[2]) + ")";
+  std::string hi = "(" + bound(hi_[0]) + ", " + bound(hi_[1]) + ", " + bound(hi_[2]) + ")";
+  std::string indices = "None";
+  if (!indices_.empty()) {
+    indices = "[";
+    for (int i : indices_) indices += std::to_string(i) + ", ";
+    indices += "]";
+  }
+  return "select_verts(" + mesh_var + ", " + lo + ", " + hi + ", " + indices + ", " + std::to_string(expect_) + ")";
+}
+
+}  // namespace opgraph
