@@ -5,6 +5,7 @@
 
 #include "ops/global_affine.h"
 #include "ops/edge_loop_affine.h"
+#include "ops/mirror.h"
 #include "ops/op.h"
 #include "ops/vertex_displace.h"
 #include "ops/subdivision.h"
@@ -39,6 +40,7 @@ const std::map<std::string, Factory>& Factories() {
        [](const Json& p) { return std::make_unique<EdgeLoopAffineOp>(EdgeLoopAffineOp::Kind::kScale, p); }},
       {"EdgeLoopAffineTranslate",
        [](const Json& p) { return std::make_unique<EdgeLoopAffineOp>(EdgeLoopAffineOp::Kind::kTranslate, p); }},
+      {"Mirror", [](const Json& p) { return std::make_unique<MirrorOp>(p); }},
   };
   return factories;
 }
