@@ -5,7 +5,7 @@ SUDO=""
 if [ "$(id -u)" != 0 ]; then SUDO=sudo; fi
 export DEBIAN_FRONTEND=noninteractive
 $SUDO apt-get update -qq
-$SUDO apt-get install -y -qq --no-install-recommends \
+$SUDO apt-get install -y -qq \
   build-essential cmake ninja-build ccache pkg-config \
   libceres-dev libeigen3-dev libgflags-dev libgoogle-glog-dev \
   libosd-dev libcgal-dev libgmp-dev libmpfr-dev libboost-dev \
