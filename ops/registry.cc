@@ -5,6 +5,7 @@
 
 #include "ops/global_affine.h"
 #include "ops/edge_loop_affine.h"
+#include "ops/extrude.h"
 #include "ops/mirror.h"
 #include "ops/op.h"
 #include "ops/vertex_displace.h"
@@ -41,6 +42,7 @@ const std::map<std::string, Factory>& Factories() {
       {"EdgeLoopAffineTranslate",
        [](const Json& p) { return std::make_unique<EdgeLoopAffineOp>(EdgeLoopAffineOp::Kind::kTranslate, p); }},
       {"Mirror", [](const Json& p) { return std::make_unique<MirrorOp>(p); }},
+      {"Extrude", [](const Json& p) { return std::make_unique<ExtrudeOp>(p); }},
   };
   return factories;
 }

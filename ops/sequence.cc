@@ -1,4 +1,5 @@
 #include "ops/sequence.h"
+#include "ops/face_selector.h"
 #include "ops/vertex_selector.h"
 
 #include <fstream>
@@ -170,7 +171,7 @@ if len(argv) != 1:
 
 std::string BlenderScript(const Sequence& sequence) {
   std::ostringstream script;
-  script << kBlenderPreamble << kVertexSelectorPython << "\nobj = new_object(" << Py(sequence.start_size) << ")\n";
+  script << kBlenderPreamble << kVertexSelectorPython << kFaceSelectorPython << "\nobj = new_object(" << Py(sequence.start_size) << ")\n";
   for (size_t i = 0; i < sequence.ops.size(); ++i) {
     const Op& op = *sequence.ops[i];
     script << "\n# " << i << ": " << op.Name() << "\n";

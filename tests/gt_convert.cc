@@ -35,6 +35,10 @@ Json ConvertGtSequence(const std::filesystem::path& path, std::string* why_not) 
         return nullptr;
       }
       params = {{"levels", p.at("levels")}};
+    } else if (name == "Extrude") {
+      params = {{"faces", p.at("faces")}, {"height", p.at("height")}, {"mode", p.value("mode", "region")}};
+    } else if (name == "Mirror") {
+      params["axes"] = p.at("axes");
     } else if (name == "VertexDisplace") {
       params["groups"] = Json::array();
       for (const Json& g : p.at("groups")) params["groups"].push_back({{"verts", g.at("verts")}, {"offset", g.at("offset")}});

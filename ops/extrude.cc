@@ -1,0 +1,161 @@
+#include "ops/extrude.h"
+
+#include <map>
+#include <set>
+
+#include "core/geometry.h"
+
+namespace opgraph {
+
+namespace {
+const Json& FacesJson(const Json& params) {
+  static const Json kMissing;
+  return params.is_object() && params.contains("faces") ? params["faces"] : kMissing;
+}
+}  // namespace
+
+ExtrudeOp::ExtrudeOp(const Json& params) : selector_(FacesJson(params), "faces") {
+  ParamReader reader(params);
+  reader.Raw("faces");
+  individual_ = reader.Word("mode", {"region", "individual"}, "region") == "individual";
+  AddParam("height", -1e6, 1e6, 0, reader.Number("height", -1e6, 1e6));
+  AddParam("width", 1e-3, 1e3, 1, reader.Number("width", 1e-3, 1e3, 1.0));
+  Vec3d tilt(0, 0, 0);
+  if (reader.Has("tilt_deg")) {
+    const Json& t = reader.Raw("tilt_deg");
+    if (!t.is_array() || t.size() != 2) throw FieldError("tilt_deg", "must be an array of 2 numbers");
+    tilt[0] = CheckedNumber(t[0], "tilt_deg[0]", -180, 180);
+    tilt[1] = CheckedNumber(t[1], "tilt_deg[1]", -180, 180);
+  }
+  AddParam("tilt_u", -kPi, kPi, 0, DegToRad(tilt[0]));
+  AddParam("tilt_v", -kPi, kPi, 0, DegToRad(tilt[1]));
+  reader.Finish();
+}
+
+void ExtrudeOp::Prepare(const Mesh& input) {
+  const std::vector<int> selected = selector_.Resolve(input);
+  groups_.clear();
+  output_faces_.clear();
+  int next_vertex = input.NumVertices();
+  std::vector<bool> extruded(input.NumFaces(), false);
+  for (int f : selected) extruded[f] = true;
+  std::vector<std::vector<int>> sets;
+  if (individual_) {
+    for (int f : selected) sets.push_back({f});
+  } else {
+    sets.push_back(selected);
+  }
+  std::vector<Polygon> new_faces;
+  for (const std::vector<int>& set : sets) {
+    Group group;
+    std::set<long long> directed;  // directed edges of the set's faces
+    for (int f : set) {
+      const Polygon& p = input.faces[f];
+      for (size_t i = 0; i < p.size(); ++i) {
+        directed.insert((static_cast<long long>(p[i]) << 32) | static_cast<unsigned>(p[(i + 1) % p.size()]));
+      }
+      group.faces.push_back(p);
+    }
+    // Boundary edges: directed edges whose reverse is not in the set. Their vertices get copies;
+    // vertices inside the region move themselves (Blender's copies replace them).
+    std::map<int, int> cap;
+    std::vector<std::pair<int, int>> boundary;
+    for (int f : set) {
+      const Polygon& p = input.faces[f];
+      for (size_t i = 0; i < p.size(); ++i) {
+        const int a = p[i], b = p[(i + 1) % p.size()];
+        if (!directed.count((static_cast<long long>(b) << 32) | static_cast<unsigned>(a))) boundary.push_back({a, b});
+      }
+    }
+    for (const auto& [a, b] : boundary) {
+      for (int v : {a, b}) {
+        if (!cap.count(v)) cap[v] = next_vertex++;
+      }
+    }
+    for (int f : set) {
+      for (int v : input.faces[f]) {
+        if (!cap.count(v)) cap[v] = v;
+      }
+    }
+    for (const auto& [source, target] : cap) group.caps.push_back({target, source});
+    for (int f : set) {
+      Polygon p = input.faces[f];
+      for (int& v : p) v = cap[v];
+      new_faces.push_back(p);
+    }
+    for (const auto& [a, b] : boundary) new_faces.push_back({a, b, cap[b], cap[a]});
+    groups_.push_back(group);
+  }
+  for (int f = 0; f < input.NumFaces(); ++f) {
+    if (!extruded[f]) output_faces_.push_back(input.faces[f]);
+  }
+  output_faces_.insert(output_faces_.end(), new_faces.begin(), new_faces.end());
+  num_output_vertices_ = next_vertex;
+}
+
+template <typename T>
+void ExtrudeOp::Apply(const T* p, const T& gate, const Positions<T>& in, Positions<T>* out) const {
+  *out = in;
+  out->resize(num_output_vertices_);
+  const T height = gate * p[0];
+  const T width = T(1) + gate * (p[1] - T(1));
+  for (const Group& group : groups_) {
+    Vec3<T> normal(T(0), T(0), T(0));
+    for (const Polygon& f : group.faces) normal += FaceAreaNormal(in, f);
+    normal = SafeNormalized(normal);
+    Vec3<T> centre(T(0), T(0), T(0));
+    for (const auto& [target, source] : group.caps) centre += in[source] + normal * height;
+    centre /= T(static_cast<double>(group.caps.size()));
+    const Vec3<T> e = std::abs(Scalar(normal.x())) < 0.9 ? Vec3<T>(T(1), T(0), T(0)) : Vec3<T>(T(0), T(1), T(0));
+    const Vec3<T> u = SafeNormalized<T>(normal.cross(e));
+    const Vec3<T> v = normal.cross(u);
+    const Eigen::Matrix<T, 3, 3> r = AxisAngleToMatrix<T>(u, gate * p[2]) * AxisAngleToMatrix<T>(v, gate * p[3]);
+    for (const auto& [target, source] : group.caps) {
+      (*out)[target] = centre + r * ((in[source] + normal * height - centre) * width);
+    }
+  }
+}
+
+template void ExtrudeOp::Apply<double>(const double*, const double&, const Positions<double>&,
+                                       Positions<double>*) const;
+template void ExtrudeOp::Apply<JetT>(const JetT*, const JetT&, const Positions<JetT>&, Positions<JetT>*) const;
+
+Json ExtrudeOp::ParamsToJson() const {
+  return {{"faces", selector_.ToJson()},
+          {"mode", individual_ ? "individual" : "region"},
+          {"height", params_[0]},
+          {"width", params_[1]},
+          {"tilt_deg", {RadToDeg(params_[2]), RadToDeg(params_[3])}}};
+}
+
+std::string ExtrudeOp::BlenderCode() const {
+  std::string code = "me = edit_mesh(obj)\nbm = bmesh.new()\nbm.from_mesh(me)\nfaces = " +
+                     selector_.PythonExpr("bm") + "\n";
+  if (individual_) {
+    code +=
+        "ret = bmesh.ops.extrude_discrete_faces(bm, faces=faces)\n"
+        "groups = [(list(f.verts), f.normal.copy()) for f in ret['faces']]\n";
+  } else {
+    code +=
+        "n = sum((f.normal * f.calc_area() for f in faces), Vector()).normalized()\n"
+        "ret = bmesh.ops.extrude_face_region(bm, geom=faces)\n"
+        "bmesh.ops.delete(bm, geom=faces, context='FACES')\n"
+        "groups = [([g for g in ret['geom'] if isinstance(g, bmesh.types.BMVert)], n)]\n";
+  }
+  code += "height, width, tilt = " + Py(params_[0]) + ", " + Py(params_[1]) + ", (" + Py(params_[2]) + ", " +
+          Py(params_[3]) + ")\n";
+  code +=
+      "for verts, n in groups:\n"
+      "    for v in verts:\n"
+      "        v.co += n * height\n"
+      "    c = sum((v.co for v in verts), Vector()) / len(verts)\n"
+      "    e = Vector((1, 0, 0)) if abs(n.x) < 0.9 else Vector((0, 1, 0))\n"
+      "    u = n.cross(e).normalized()\n"
+      "    r = Matrix.Rotation(tilt[0], 3, u) @ Matrix.Rotation(tilt[1], 3, n.cross(u))\n"
+      "    for v in verts:\n"
+      "        v.co = c + r @ ((v.co - c) * width)\n"
+      "bm.to_mesh(me)\nbm.free()\nme.update()\n";
+  return code;
+}
+
+}  // namespace opgraph

@@ -1,0 +1,158 @@
+#include "ops/face_selector.h"
+
+#include <algorithm>
+#include <limits>
+
+#include "core/geometry.h"
+
+namespace opgraph {
+
+const char* kFaceSelectorPython = R"PY(
+def select_faces(bm, normals, min_dot, lo, hi, centers, indices, expect):
+    bm.faces.ensure_lookup_table()
+    if indices is not None:
+        found = [bm.faces[i] for i in indices if i < len(bm.faces)]
+    else:
+        def inside(f):
+            c = f.calc_center_median()
+            return all((lo[k] is None or c[k] >= lo[k]) and (hi[k] is None or c[k] <= hi[k]) for k in range(3))
+        found = [f for f in bm.faces
+                 if (not normals or any(f.normal.dot(Vector(n).normalized()) >= min_dot for n in normals))
+                 and inside(f)]
+        if centers:
+            picked = []
+            for p in centers:
+                if found:
+                    best = min(found, key=lambda f: (f.calc_center_median() - Vector(p)).length)
+                    if best not in picked:
+                        picked.append(best)
+            found = sorted(picked, key=lambda f: f.index)
+    if not found or (expect >= 0 and len(found) != expect):
+        sys.exit('face selection found %d faces, expected %d' % (len(found), expect))
+    return found
+)PY";
+
+FaceSelector::FaceSelector(const Json& json, const std::string& field) : field_(field) {
+  if (!json.is_object()) throw FieldError(field, "must be a face selector object");
+  for (auto it = json.begin(); it != json.end(); ++it) {
+    static const std::vector<std::string> kKeys = {"normal", "normal_any", "min_dot", "box", "centers", "indices", "expect"};
+    if (std::find(kKeys.begin(), kKeys.end(), it.key()) == kKeys.end()) {
+      throw FieldError(field + "." + it.key().substr(0, 40), "unknown key");
+    }
+  }
+  if (json.contains("normal")) normals_.push_back(CheckedVector3(json["normal"], field + ".normal", -1e6, 1e6));
+  if (json.contains("normal_any")) {
+    if (!json["normal_any"].is_array()) throw FieldError(field + ".normal_any", "must be a list of vectors");
+    for (const Json& n : json["normal_any"]) normals_.push_back(CheckedVector3(n, field + ".normal_any", -1e6, 1e6));
+  }
+  for (const Vec3d& n : normals_) {
+    if (n.norm() < 1e-9) throw FieldError(field + ".normal", "must not be zero");
+  }
+  if (json.contains("min_dot")) min_dot_ = CheckedNumber(json["min_dot"], field + ".min_dot", -1, 1);
+  if (json.contains("box")) {
+    const Json& box = json["box"];
+    if (!box.is_array() || box.size() != 2 || !box[0].is_array() || box[0].size() != 3 ||
+        !box[1].is_array() || box[1].size() != 3) {
+      throw FieldError(field + ".box", "must be [[xmin, ymin, zmin], [xmax, ymax, zmax]] (null = unbounded)");
+    }
+    for (int k = 0; k < 3; ++k) {
+      if (!box[0][k].is_null()) lo_[k] = CheckedNumber(box[0][k], field + ".box", -1e9, 1e9);
+      if (!box[1][k].is_null()) hi_[k] = CheckedNumber(box[1][k], field + ".box", -1e9, 1e9);
+    }
+  }
+  if (json.contains("centers")) {
+    if (!json["centers"].is_array()) throw FieldError(field + ".centers", "must be a list of points");
+    for (const Json& c : json["centers"]) centers_.push_back(CheckedVector3(c, field + ".centers", -1e9, 1e9));
+  }
+  if (json.contains("indices")) {
+    if (!json["indices"].is_array() || json["indices"].empty()) throw FieldError(field + ".indices", "must be a non-empty list");
+    for (const Json& i : json["indices"]) indices_.push_back(static_cast<int>(CheckedNumber(i, field + ".indices", 0, 1e9)));
+  }
+  if (json.contains("expect")) expect_ = static_cast<int>(CheckedNumber(json["expect"], field + ".expect", 1, 1e9));
+}
+
+std::vector<int> FaceSelector::Resolve(const Mesh& mesh) const {
+  std::vector<int> found;
+  if (!indices_.empty()) {
+    for (int i : indices_) {
+      if (i >= mesh.NumFaces()) throw FieldError(field_, "face " + std::to_string(i) + " does not exist at this step");
+      found.push_back(i);
+    }
+  } else {
+    for (int f = 0; f < mesh.NumFaces(); ++f) {
+      const Vec3d normal = FaceAreaNormal(mesh.vertices, mesh.faces[f]).normalized();
+      const Vec3d c = FaceCentroid(mesh.vertices, mesh.faces[f]);
+      bool ok = normals_.empty();
+      for (const Vec3d& n : normals_) ok = ok || normal.dot(n.normalized()) >= min_dot_;
+      for (int k = 0; k < 3; ++k) {
+        if (lo_[k] && c[k] < *lo_[k]) ok = false;
+        if (hi_[k] && c[k] > *hi_[k]) ok = false;
+      }
+      if (ok) found.push_back(f);
+    }
+    if (!centers_.empty()) {
+      std::vector<int> picked;
+      for (const Vec3d& p : centers_) {
+        int best = -1;
+        double best_d = std::numeric_limits<double>::max();
+        for (int f : found) {
+          const double d = (FaceCentroid(mesh.vertices, mesh.faces[f]) - p).norm();
+          if (d < best_d) best_d = d, best = f;
+        }
+        if (best >= 0 && std::find(picked.begin(), picked.end(), best) == picked.end()) picked.push_back(best);
+      }
+      std::sort(picked.begin(), picked.end());
+      found = picked;
+    }
+  }
+  if (found.empty()) throw FieldError(field_, "selects no face at this step");
+  if (expect_ >= 0 && static_cast<int>(found.size()) != expect_) {
+    throw FieldError(field_, "selects " + std::to_string(found.size()) + " faces, expected " + std::to_string(expect_));
+  }
+  return found;
+}
+
+Json FaceSelector::ToJson() const {
+  Json j;
+  if (!indices_.empty()) j["indices"] = indices_;
+  if (normals_.size() == 1) j["normal"] = opgraph::ToJson(normals_[0]);
+  if (normals_.size() > 1) {
+    j["normal_any"] = Json::array();
+    for (const Vec3d& n : normals_) j["normal_any"].push_back(opgraph::ToJson(n));
+  }
+  if (!normals_.empty()) j["min_dot"] = min_dot_;
+  bool has_box = false;
+  Json lo = Json::array(), hi = Json::array();
+  for (int k = 0; k < 3; ++k) {
+    has_box = has_box || lo_[k] || hi_[k];
+    lo.push_back(lo_[k] ? Json(*lo_[k]) : Json(nullptr));
+    hi.push_back(hi_[k] ? Json(*hi_[k]) : Json(nullptr));
+  }
+  if (has_box) j["box"] = {lo, hi};
+  if (!centers_.empty()) {
+    j["centers"] = Json::array();
+    for (const Vec3d& c : centers_) j["centers"].push_back(opgraph::ToJson(c));
+  }
+  if (expect_ >= 0) j["expect"] = expect_;
+  return j;
+}
+
+std::string FaceSelector::PythonExpr(const std::string& bm_var) const {
+  auto bound = [](const std::optional<double>& b) { return b ? Py(*b) : std::string("None"); };
+  auto list = [](const std::vector<Vec3d>& vs) {
+    std::string s = "[";
+    for (const Vec3d& v : vs) s += PyVec(v) + ", ";
+    return s + "]";
+  };
+  std::string indices = "None";
+  if (!indices_.empty()) {
+    indices = "[";
+    for (int i : indices_) indices += std::to_string(i) + ", ";
+    indices += "]";
+  }
+  return "select_faces(" + bm_var + ", " + list(normals_) + ", " + Py(min_dot_) + ", (" + bound(lo_[0]) + ", " +
+         bound(lo_[1]) + ", " + bound(lo_[2]) + "), (" + bound(hi_[0]) + ", " + bound(hi_[1]) + ", " +
+         bound(hi_[2]) + "), " + list(centers_) + ", " + indices + ", " + std::to_string(expect_) + ")";
+}
+
+}  // namespace opgraph
