@@ -1,8 +1,5 @@
 #include "ops/extrude.h"
 
-#include <map>
-#include <set>
-
 #include "core/geometry.h"
 
 namespace opgraph {
@@ -34,63 +31,14 @@ ExtrudeOp::ExtrudeOp(const Json& params) : selector_(FacesJson(params), "faces")
 
 void ExtrudeOp::Prepare(const Mesh& input) {
   const std::vector<int> selected = selector_.Resolve(input);
-  groups_.clear();
-  output_faces_.clear();
-  int next_vertex = input.NumVertices();
-  std::vector<bool> extruded(input.NumFaces(), false);
-  for (int f : selected) extruded[f] = true;
   std::vector<std::vector<int>> sets;
   if (individual_) {
     for (int f : selected) sets.push_back({f});
   } else {
     sets.push_back(selected);
   }
-  std::vector<Polygon> new_faces;
-  for (const std::vector<int>& set : sets) {
-    Group group;
-    std::set<long long> directed;  // directed edges of the set's faces
-    for (int f : set) {
-      const Polygon& p = input.faces[f];
-      for (size_t i = 0; i < p.size(); ++i) {
-        directed.insert((static_cast<long long>(p[i]) << 32) | static_cast<unsigned>(p[(i + 1) % p.size()]));
-      }
-      group.faces.push_back(p);
-    }
-    // Boundary edges: directed edges whose reverse is not in the set. Their vertices get copies;
-    // vertices inside the region move themselves (Blender's copies replace them).
-    std::map<int, int> cap;
-    std::vector<std::pair<int, int>> boundary;
-    for (int f : set) {
-      const Polygon& p = input.faces[f];
-      for (size_t i = 0; i < p.size(); ++i) {
-        const int a = p[i], b = p[(i + 1) % p.size()];
-        if (!directed.count((static_cast<long long>(b) << 32) | static_cast<unsigned>(a))) boundary.push_back({a, b});
-      }
-    }
-    for (const auto& [a, b] : boundary) {
-      for (int v : {a, b}) {
-        if (!cap.count(v)) cap[v] = next_vertex++;
-      }
-    }
-    for (int f : set) {
-      for (int v : input.faces[f]) {
-        if (!cap.count(v)) cap[v] = v;
-      }
-    }
-    for (const auto& [source, target] : cap) group.caps.push_back({target, source});
-    for (int f : set) {
-      Polygon p = input.faces[f];
-      for (int& v : p) v = cap[v];
-      new_faces.push_back(p);
-    }
-    for (const auto& [a, b] : boundary) new_faces.push_back({a, b, cap[b], cap[a]});
-    groups_.push_back(group);
-  }
-  for (int f = 0; f < input.NumFaces(); ++f) {
-    if (!extruded[f]) output_faces_.push_back(input.faces[f]);
-  }
-  output_faces_.insert(output_faces_.end(), new_faces.begin(), new_faces.end());
-  num_output_vertices_ = next_vertex;
+  input_faces_ = input.faces;
+  regions_ = CopyRegions(input, sets, &output_faces_, &num_output_vertices_);
 }
 
 template <typename T>
@@ -99,9 +47,9 @@ void ExtrudeOp::Apply(const T* p, const T& gate, const Positions<T>& in, Positio
   out->resize(num_output_vertices_);
   const T height = gate * p[0];
   const T width = T(1) + gate * (p[1] - T(1));
-  for (const Group& group : groups_) {
+  for (const RegionCopy& group : regions_) {
     Vec3<T> normal(T(0), T(0), T(0));
-    for (const Polygon& f : group.faces) normal += FaceAreaNormal(in, f);
+    for (int f : group.faces) normal += FaceAreaNormal(in, input_faces_[f]);
     normal = SafeNormalized(normal);
     Vec3<T> centre(T(0), T(0), T(0));
     for (const auto& [target, source] : group.caps) centre += in[source] + normal * height;

@@ -16,6 +16,7 @@
 
 #include "ops/face_selector.h"
 #include "ops/op.h"
+#include "ops/region_topology.h"
 
 namespace opgraph {
 
@@ -32,13 +33,10 @@ class ExtrudeOp : public OpBase<ExtrudeOp> {
   void Apply(const T* p, const T& gate, const Positions<T>& in, Positions<T>* out) const;
 
  private:
-  struct Group {
-    std::vector<Polygon> faces;   // the extruded faces, input indices (for the normal)
-    std::vector<std::pair<int, int>> caps;  // (output cap vertex, input source vertex)
-  };
   FaceSelector selector_;
   bool individual_ = false;
-  std::vector<Group> groups_;
+  std::vector<Polygon> input_faces_;
+  std::vector<RegionCopy> regions_;
 };
 
 }  // namespace opgraph

@@ -4,6 +4,7 @@
 #include <stdexcept>
 
 #include "ops/global_affine.h"
+#include "ops/loop_cut.h"
 #include "ops/edge_loop_affine.h"
 #include "ops/extrude.h"
 #include "ops/mirror.h"
@@ -24,6 +25,7 @@ const std::map<std::string, Factory>& Factories() {
       {"GlobalAffineScale",
        [](const Json& p) { return std::make_unique<GlobalAffineOp>(GlobalAffineOp::Kind::kScale, p); }},
       {"Subdivision", [](const Json& p) { return std::make_unique<SubdivisionOp>(p); }},
+      {"LoopCut", [](const Json& p) { return std::make_unique<LoopCutOp>(p); }},
       {"GlobalAffineTranslate",
        [](const Json& p) { return std::make_unique<GlobalAffineOp>(GlobalAffineOp::Kind::kTranslate, p); }},
       {"SimpleDeformTwist",

@@ -51,6 +51,9 @@ Json ConvertGtSequence(const std::filesystem::path& path, std::string* why_not) 
       for (const char* key : {"scale", "rotation_deg", "offset"}) {
         if (p.contains(key)) params[key] = p.at(key);
       }
+    } else if (name == "LoopCut") {
+      params = {{"axis", p.at("axis")}, {"cuts", p.at("cuts")},
+                {"near", p.value("near", Json::array({0.0, 0.0, 0.0}))}};
     } else {
       *why_not = "no converter for " + name + " yet";
       return nullptr;
