@@ -4,6 +4,7 @@
 #include <stdexcept>
 
 #include "ops/global_affine.h"
+#include "ops/inset.h"
 #include "ops/loop_cut.h"
 #include "ops/edge_loop_affine.h"
 #include "ops/extrude.h"
@@ -45,6 +46,7 @@ const std::map<std::string, Factory>& Factories() {
        [](const Json& p) { return std::make_unique<EdgeLoopAffineOp>(EdgeLoopAffineOp::Kind::kTranslate, p); }},
       {"Mirror", [](const Json& p) { return std::make_unique<MirrorOp>(p); }},
       {"Extrude", [](const Json& p) { return std::make_unique<ExtrudeOp>(p); }},
+      {"Inset", [](const Json& p) { return std::make_unique<InsetOp>(p); }},
   };
   return factories;
 }

@@ -37,6 +37,12 @@ Json ConvertGtSequence(const std::filesystem::path& path, std::string* why_not) 
       params = {{"levels", p.at("levels")}};
     } else if (name == "Extrude") {
       params = {{"faces", p.at("faces")}, {"height", p.at("height")}, {"mode", p.value("mode", "region")}};
+    } else if (name == "Inset") {
+      if (p.value("mode", "region") != "region" || !p.value("use_even_offset", true)) {
+        *why_not = "Inset other than region mode with even offset";
+        return nullptr;
+      }
+      params = {{"faces", p.at("faces")}, {"thickness", p.at("thickness")}, {"depth", p.value("depth", 0.0)}};
     } else if (name == "Mirror") {
       params["axes"] = p.at("axes");
     } else if (name == "VertexDisplace") {
