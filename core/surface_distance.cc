@@ -12,11 +12,17 @@ struct Triangle {
   Vec3d a, b, c;
 };
 
+// Every fan triangulation of every polygon (from each of its corners), so a non-planar
+// polygon's surface does not depend on which corner its loop starts at.
 std::vector<Triangle> Triangulate(const Mesh& mesh) {
   std::vector<Triangle> tris;
   for (const Polygon& f : mesh.faces) {
-    for (size_t i = 1; i + 1 < f.size(); ++i) {
-      tris.push_back({mesh.vertices[f[0]], mesh.vertices[f[i]], mesh.vertices[f[i + 1]]});
+    const size_t n = f.size();
+    const size_t fans = n == 3 ? 1 : n;
+    for (size_t s = 0; s < fans; ++s) {
+      for (size_t i = 1; i + 1 < n; ++i) {
+        tris.push_back({mesh.vertices[f[s]], mesh.vertices[f[(s + i) % n]], mesh.vertices[f[(s + i + 1) % n]]});
+      }
     }
   }
   return tris;

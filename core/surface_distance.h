@@ -1,4 +1,5 @@
-// Point-to-surface distances between polygon meshes (polygons fan-triangulated), used for
+// Point-to-surface distances between polygon meshes (a polygon's surface: the union of its fan
+// triangulations from every corner, so it does not depend on where the loop starts), used for
 // parity checks against Blender. Exact closest-point queries, brute force over triangles:
 // meant for test-sized meshes (up to some 10^4 faces).
 #pragma once
@@ -8,8 +9,7 @@
 namespace opgraph {
 
 // Largest distance from the sample points of `from` (vertices, edge midpoints, and the
-// centroid and 4 seeded random points of each fan triangle, so non-planar polygons are
-// sampled on the surface they are compared as) to the surface of `to`.
+// centroid and 4 seeded random points of each of those triangles) to the surface of `to`.
 double MaxPointToSurfaceDistance(const Mesh& from, const Mesh& to);
 
 // max(MaxPointToSurfaceDistance(a, b), MaxPointToSurfaceDistance(b, a)) divided by the

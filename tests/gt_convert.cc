@@ -43,6 +43,15 @@ Json ConvertGtSequence(const std::filesystem::path& path, std::string* why_not) 
         return nullptr;
       }
       params = {{"faces", p.at("faces")}, {"thickness", p.at("thickness")}, {"depth", p.value("depth", 0.0)}};
+    } else if (name.rfind("SimpleDeform", 0) == 0) {
+      if (p.value("origin", Json::array({0.0, 0.0, 0.0})) != Json::array({0.0, 0.0, 0.0}) ||
+          p.value("lock", Json::array({false, false, false})) != Json::array({false, false, false})) {
+        *why_not = name + " with an origin object or locked axes";
+        return nullptr;
+      }
+      params = {{"axis", p.at("axis")}, {"limits", p.value("limits", Json::array({0.0, 1.0}))}};
+      if (p.contains("angle_deg")) params["angle_deg"] = p["angle_deg"];
+      if (p.contains("factor")) params["factor"] = p["factor"];
     } else if (name == "Mirror") {
       params["axes"] = p.at("axes");
     } else if (name == "VertexDisplace") {
