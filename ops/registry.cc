@@ -5,6 +5,7 @@
 
 #include "ops/global_affine.h"
 #include "ops/inset.h"
+#include "ops/knife_cut.h"
 #include "ops/loop_cut.h"
 #include "ops/edge_loop_affine.h"
 #include "ops/extrude.h"
@@ -47,6 +48,7 @@ const std::map<std::string, Factory>& Factories() {
       {"Mirror", [](const Json& p) { return std::make_unique<MirrorOp>(p); }},
       {"Extrude", [](const Json& p) { return std::make_unique<ExtrudeOp>(p); }},
       {"Inset", [](const Json& p) { return std::make_unique<InsetOp>(p); }},
+      {"KnifeCut", [](const Json& p) { return std::make_unique<KnifeCutOp>(p); }},
   };
   return factories;
 }
