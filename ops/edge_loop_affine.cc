@@ -6,14 +6,10 @@ namespace opgraph {
 
 namespace {
 const char* kKeys[3] = {"rotation_deg", "scale", "offset"};
-const Json& VertsJson(const Json& params) {
-  static const Json kMissing;
-  return params.is_object() && params.contains("verts") ? params["verts"] : kMissing;
-}
 }  // namespace
 
 EdgeLoopAffineOp::EdgeLoopAffineOp(Kind kind, const Json& params)
-    : kind_(kind), selector_(VertsJson(params), "verts") {
+    : kind_(kind), selector_(MemberOrNull(params, "verts"), "verts") {
   ParamReader reader(params);
   reader.Raw("verts");
   const char* axes[3] = {"x", "y", "z"};

@@ -4,14 +4,7 @@
 
 namespace opgraph {
 
-namespace {
-const Json& FacesJson(const Json& params) {
-  static const Json kMissing;
-  return params.is_object() && params.contains("faces") ? params["faces"] : kMissing;
-}
-}  // namespace
-
-ExtrudeOp::ExtrudeOp(const Json& params) : selector_(FacesJson(params), "faces") {
+ExtrudeOp::ExtrudeOp(const Json& params) : selector_(MemberOrNull(params, "faces"), "faces") {
   ParamReader reader(params);
   reader.Raw("faces");
   individual_ = reader.Word("mode", {"region", "individual"}, "region") == "individual";

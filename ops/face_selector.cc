@@ -50,15 +50,7 @@ FaceSelector::FaceSelector(const Json& json, const std::string& field) : field_(
   }
   if (json.contains("min_dot")) min_dot_ = CheckedNumber(json["min_dot"], field + ".min_dot", -1, 1);
   if (json.contains("box")) {
-    const Json& box = json["box"];
-    if (!box.is_array() || box.size() != 2 || !box[0].is_array() || box[0].size() != 3 ||
-        !box[1].is_array() || box[1].size() != 3) {
-      throw FieldError(field + ".box", "must be [[xmin, ymin, zmin], [xmax, ymax, zmax]] (null = unbounded)");
-    }
-    for (int k = 0; k < 3; ++k) {
-      if (!box[0][k].is_null()) lo_[k] = CheckedNumber(box[0][k], field + ".box", -1e9, 1e9);
-      if (!box[1][k].is_null()) hi_[k] = CheckedNumber(box[1][k], field + ".box", -1e9, 1e9);
-    }
+    box_ = Box::Parse(json["box"], field + ".box");
   }
   if (json.contains("centers")) {
     if (!json["centers"].is_array()) throw FieldError(field + ".centers", "must be a list of points");
@@ -84,10 +76,7 @@ std::vector<int> FaceSelector::Resolve(const Mesh& mesh) const {
       const Vec3d c = FaceCentroid(mesh.vertices, mesh.faces[f]);
       bool ok = normals_.empty();
       for (const Vec3d& n : normals_) ok = ok || normal.dot(n.normalized()) >= min_dot_;
-      for (int k = 0; k < 3; ++k) {
-        if (lo_[k] && c[k] < *lo_[k]) ok = false;
-        if (hi_[k] && c[k] > *hi_[k]) ok = false;
-      }
+      ok = ok && box_.Contains(c);
       if (ok) found.push_back(f);
     }
     if (!centers_.empty()) {
@@ -121,14 +110,7 @@ Json FaceSelector::ToJson() const {
     for (const Vec3d& n : normals_) j["normal_any"].push_back(opgraph::ToJson(n));
   }
   if (!normals_.empty()) j["min_dot"] = min_dot_;
-  bool has_box = false;
-  Json lo = Json::array(), hi = Json::array();
-  for (int k = 0; k < 3; ++k) {
-    has_box = has_box || lo_[k] || hi_[k];
-    lo.push_back(lo_[k] ? Json(*lo_[k]) : Json(nullptr));
-    hi.push_back(hi_[k] ? Json(*hi_[k]) : Json(nullptr));
-  }
-  if (has_box) j["box"] = {lo, hi};
+  if (box_.Bounded()) j["box"] = box_.ToJson();
   if (!centers_.empty()) {
     j["centers"] = Json::array();
     for (const Vec3d& c : centers_) j["centers"].push_back(opgraph::ToJson(c));
@@ -138,7 +120,6 @@ Json FaceSelector::ToJson() const {
 }
 
 std::string FaceSelector::PythonExpr(const std::string& bm_var) const {
-  auto bound = [](const std::optional<double>& b) { return b ? Py(*b) : std::string("None"); };
   auto list = [](const std::vector<Vec3d>& vs) {
     std::string s = "[";
     for (const Vec3d& v : vs) s += PyVec(v) + ", ";
@@ -150,9 +131,7 @@ std::string FaceSelector::PythonExpr(const std::string& bm_var) const {
     for (int i : indices_) indices += std::to_string(i) + ", ";
     indices += "]";
   }
-  return "select_faces(" + bm_var + ", " + list(normals_) + ", " + Py(min_dot_) + ", (" + bound(lo_[0]) + ", " +
-         bound(lo_[1]) + ", " + bound(lo_[2]) + "), (" + bound(hi_[0]) + ", " + bound(hi_[1]) + ", " +
-         bound(hi_[2]) + "), " + list(centers_) + ", " + indices + ", " + std::to_string(expect_) + ")";
+  return "select_faces(" + bm_var + ", " + list(normals_) + ", " + Py(min_dot_) + ", " + box_.PythonArgs() + ", " + list(centers_) + ", " + indices + ", " + std::to_string(expect_) + ")";
 }
 
 }  // namespace opgraph

@@ -13,6 +13,7 @@
 #include <vector>
 
 #include "core/mesh.h"
+#include "ops/box.h"
 #include "ops/params.h"
 
 namespace opgraph {
@@ -33,7 +34,7 @@ class FaceSelector {
   std::vector<Vec3d> normals_;
   double min_dot_ = 0.99;
   bool normal_any_ = false;
-  std::optional<double> lo_[3], hi_[3];
+  Box box_;
   std::vector<Vec3d> centers_;
   std::vector<int> indices_;
   int expect_ = -1;

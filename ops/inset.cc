@@ -6,14 +6,7 @@
 
 namespace opgraph {
 
-namespace {
-const Json& FacesJson(const Json& params) {
-  static const Json kMissing;
-  return params.is_object() && params.contains("faces") ? params["faces"] : kMissing;
-}
-}  // namespace
-
-InsetOp::InsetOp(const Json& params) : selector_(FacesJson(params), "faces") {
+InsetOp::InsetOp(const Json& params) : selector_(MemberOrNull(params, "faces"), "faces") {
   ParamReader reader(params);
   reader.Raw("faces");
   AddParam("thickness", 0, 1e6, 0, reader.Number("thickness", 0, 1e6));

@@ -4,14 +4,7 @@
 
 namespace opgraph {
 
-namespace {
-const Json& FaceJson(const Json& params) {
-  static const Json kMissing;
-  return params.is_object() && params.contains("face") ? params["face"] : kMissing;
-}
-}  // namespace
-
-KnifeCutOp::KnifeCutOp(const Json& params) : selector_(FaceJson(params), "face") {
+KnifeCutOp::KnifeCutOp(const Json& params) : selector_(MemberOrNull(params, "face"), "face") {
   ParamReader reader(params);
   reader.Raw("face");
   const Json& points = reader.Raw("edge_points");

@@ -78,4 +78,11 @@ inline double RadToDeg(double rad) { return rad * 180.0 / kPi; }
 
 Json ToJson(const Vec3d& v);
 
+// params[key] when params is an object holding it, else null (for members parsed in an
+// initialiser list before the ParamReader runs; the reader then reports a missing key).
+inline const Json& MemberOrNull(const Json& params, const char* key) {
+  static const Json kNull;
+  return params.is_object() && params.contains(key) ? params[key] : kNull;
+}
+
 }  // namespace opgraph

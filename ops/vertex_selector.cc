@@ -29,15 +29,7 @@ VertexSelector::VertexSelector(const Json& json, const std::string& field) : fie
       indices_.push_back(static_cast<int>(CheckedNumber(i, field + ".indices", 0, 1e9)));
     }
   } else if (json.contains("box")) {
-    const Json& box = json["box"];
-    if (!box.is_array() || box.size() != 2 || !box[0].is_array() || box[0].size() != 3 ||
-        !box[1].is_array() || box[1].size() != 3) {
-      throw FieldError(field + ".box", "must be [[xmin, ymin, zmin], [xmax, ymax, zmax]] (null = unbounded)");
-    }
-    for (int k = 0; k < 3; ++k) {
-      if (!box[0][k].is_null()) lo_[k] = CheckedNumber(box[0][k], field + ".box", -1e9, 1e9);
-      if (!box[1][k].is_null()) hi_[k] = CheckedNumber(box[1][k], field + ".box", -1e9, 1e9);
-    }
+    box_ = Box::Parse(json["box"], field + ".box");
   } else {
     throw FieldError(field, "needs 'box' or 'indices'");
   }
@@ -53,12 +45,7 @@ std::vector<int> VertexSelector::Resolve(const Mesh& mesh) const {
     }
   } else {
     for (int v = 0; v < mesh.NumVertices(); ++v) {
-      bool inside = true;
-      for (int k = 0; k < 3; ++k) {
-        if (lo_[k] && mesh.vertices[v][k] < *lo_[k]) inside = false;
-        if (hi_[k] && mesh.vertices[v][k] > *hi_[k]) inside = false;
-      }
-      if (inside) found.push_back(v);
+      if (box_.Contains(mesh.vertices[v])) found.push_back(v);
     }
   }
   if (found.empty()) throw FieldError(field_, "selects no vertex at this step");
@@ -73,28 +60,20 @@ Json VertexSelector::ToJson() const {
   if (!indices_.empty()) {
     j["indices"] = indices_;
   } else {
-    Json lo = Json::array(), hi = Json::array();
-    for (int k = 0; k < 3; ++k) {
-      lo.push_back(lo_[k] ? Json(*lo_[k]) : Json(nullptr));
-      hi.push_back(hi_[k] ? Json(*hi_[k]) : Json(nullptr));
-    }
-    j["box"] = {lo, hi};
+    j["box"] = box_.ToJson();
   }
   if (expect_ >= 0) j["expect"] = expect_;
   return j;
 }
 
 std::string VertexSelector::PythonExpr(const std::string& mesh_var) const {
-  auto bound = [](const std::optional<double>& b) { return b ? Py(*b) : std::string("None"); };
-  std::string lo = "(" + bound(lo_[0]) + ", " + bound(lo_[1]) + ", " + bound(lo_[2]) + ")";
-  std::string hi = "(" + bound(hi_[0]) + ", " + bound(hi_[1]) + ", " + bound(hi_[2]) + ")";
   std::string indices = "None";
   if (!indices_.empty()) {
     indices = "[";
     for (int i : indices_) indices += std::to_string(i) + ", ";
     indices += "]";
   }
-  return "select_verts(" + mesh_var + ", " + lo + ", " + hi + ", " + indices + ", " + std::to_string(expect_) + ")";
+  return "select_verts(" + mesh_var + ", " + box_.PythonArgs() + ", " + indices + ", " + std::to_string(expect_) + ")";
 }
 
 }  // namespace opgraph

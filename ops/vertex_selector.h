@@ -11,6 +11,7 @@
 #include <vector>
 
 #include "core/mesh.h"
+#include "ops/box.h"
 #include "ops/params.h"
 
 namespace opgraph {
@@ -29,7 +30,7 @@ class VertexSelector {
 
  private:
   std::string field_;
-  std::optional<double> lo_[3], hi_[3];
+  Box box_;
   std::vector<int> indices_;
   int expect_ = -1;
 };
