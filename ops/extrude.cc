@@ -70,7 +70,7 @@ Json ExtrudeOp::ParamsToJson() const {
 }
 
 std::string ExtrudeOp::BlenderCode() const {
-  std::string code = "me = edit_mesh(obj)\nbm = bmesh.new()\nbm.from_mesh(me)\nfaces = " +
+  std::string code = "me, bm = open_bmesh(obj)\nfaces = " +
                      selector_.PythonExpr("bm") + "\n";
   if (individual_) {
     code +=
@@ -95,7 +95,7 @@ std::string ExtrudeOp::BlenderCode() const {
       "    r = Matrix.Rotation(tilt[0], 3, u) @ Matrix.Rotation(tilt[1], 3, n.cross(u))\n"
       "    for v in verts:\n"
       "        v.co = c + r @ ((v.co - c) * width)\n"
-      "bm.to_mesh(me)\nbm.free()\nme.update()\n";
+      "close_bmesh(me, bm)\n";
   return code;
 }
 

@@ -57,8 +57,7 @@ FaceSelector::FaceSelector(const Json& json, const std::string& field) : field_(
     for (const Json& c : json["centers"]) centers_.push_back(CheckedVector3(c, field + ".centers", -1e9, 1e9));
   }
   if (json.contains("indices")) {
-    if (!json["indices"].is_array() || json["indices"].empty()) throw FieldError(field + ".indices", "must be a non-empty list");
-    for (const Json& i : json["indices"]) indices_.push_back(static_cast<int>(CheckedNumber(i, field + ".indices", 0, 1e9)));
+    indices_ = CheckedIndices(json["indices"], field + ".indices");
   }
   if (json.contains("expect")) expect_ = static_cast<int>(CheckedNumber(json["expect"], field + ".expect", 1, 1e9));
 }
@@ -94,10 +93,7 @@ std::vector<int> FaceSelector::Resolve(const Mesh& mesh) const {
       found = picked;
     }
   }
-  if (found.empty()) throw FieldError(field_, "selects no face at this step");
-  if (expect_ >= 0 && static_cast<int>(found.size()) != expect_) {
-    throw FieldError(field_, "selects " + std::to_string(found.size()) + " faces, expected " + std::to_string(expect_));
-  }
+  CheckSelectionCount(found.size(), expect_, field_, "faces");
   return found;
 }
 

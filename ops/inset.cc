@@ -62,11 +62,11 @@ Json InsetOp::ParamsToJson() const {
 }
 
 std::string InsetOp::BlenderCode() const {
-  return "me = edit_mesh(obj)\nbm = bmesh.new()\nbm.from_mesh(me)\nfaces = " + selector_.PythonExpr("bm") +
+  return "me, bm = open_bmesh(obj)\nfaces = " + selector_.PythonExpr("bm") +
          "\nbmesh.ops.inset_region(bm, faces=faces, thickness=" + Py(params_[0]) + ", depth=" + Py(params_[1]) +
          ", use_even_offset=True, use_interpolate=True, use_relative_offset=False, use_edge_rail=False,"
          " use_outset=False, use_boundary=True)\n"
-         "bm.to_mesh(me)\nbm.free()\nme.update()\n";
+         "close_bmesh(me, bm)\n";
 }
 
 }  // namespace opgraph

@@ -73,14 +73,14 @@ Json KnifeCutOp::ParamsToJson() const {
 }
 
 std::string KnifeCutOp::BlenderCode() const {
-  return "me = edit_mesh(obj)\nbm = bmesh.new()\nbm.from_mesh(me)\nface = " + selector_.PythonExpr("bm") +
+  return "me, bm = open_bmesh(obj)\nface = " + selector_.PythonExpr("bm") +
          "[0]\n"
          "edges = [min(face.edges, key=lambda e: ((e.verts[0].co + e.verts[1].co) / 2 - Vector(p)).length)\n"
          "         for p in (" + PyVec(points_[0]) + ", " + PyVec(points_[1]) + ")]\n"
          "ret = bmesh.ops.bisect_edges(bm, edges=edges, cuts=1)\n"
          "mids = [g for g in ret['geom_split'] if isinstance(g, bmesh.types.BMVert)]\n"
          "bmesh.ops.connect_vert_pair(bm, verts=mids)\n"
-         "bm.to_mesh(me)\nbm.free()\nme.update()\n";
+         "close_bmesh(me, bm)\n";
 }
 
 }  // namespace opgraph

@@ -176,15 +176,11 @@ std::string LoopCutOp::BlenderCode() const {
     return ring
 
 
-me = edit_mesh(obj)
-bm = bmesh.new()
-bm.from_mesh(me)
+me, bm = open_bmesh(obj)
 )PY") + "ring = opgraph_edge_ring(bm, Vector(" + PyVec(axis) + "), Vector(" + PyVec(near_) + "))\n" +
          "bmesh.ops.subdivide_edges(bm, edges=ring, cuts=" + std::to_string(cuts_) +
          ", use_grid_fill=" + PyBool(true) + ")\n" +
-         "bm.to_mesh(me)\n" +
-         "bm.free()\n" +
-         "me.update()\n";
+         "close_bmesh(me, bm)\n";
 }
 
 }  // namespace opgraph

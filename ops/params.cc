@@ -146,6 +146,23 @@ std::string PyWord(const std::string& word) {
   return "'" + word + "'";
 }
 
+std::vector<int> CheckedIndices(const Json& value, const std::string& field) {
+  if (!value.is_array() || value.empty()) throw FieldError(field, "must be a non-empty list of indices");
+  std::vector<int> indices;
+  for (const Json& i : value) {
+    if (!i.is_number_integer()) throw FieldError(field, "entries must be integers");
+    indices.push_back(static_cast<int>(CheckedNumber(i, field, 0, 1e9)));
+  }
+  return indices;
+}
+
+void CheckSelectionCount(size_t count, int expect, const std::string& field, const std::string& noun) {
+  if (count == 0) throw FieldError(field, "selects no " + noun + " at this step");
+  if (expect >= 0 && static_cast<int>(count) != expect) {
+    throw FieldError(field, "selects " + std::to_string(count) + " " + noun + ", expected " + std::to_string(expect));
+  }
+}
+
 Json ToJson(const Vec3d& v) { return Json::array({v.x(), v.y(), v.z()}); }
 
 }  // namespace opgraph

@@ -78,6 +78,13 @@ inline double RadToDeg(double rad) { return rad * 180.0 / kPi; }
 
 Json ToJson(const Vec3d& v);
 
+// A non-empty JSON list of non-negative integers at `field`.
+std::vector<int> CheckedIndices(const Json& value, const std::string& field);
+
+// Throws FieldError(field) when `count` is 0 or differs from `expect` (< 0: any count).
+// `noun` names the elements ("faces", "vertices").
+void CheckSelectionCount(size_t count, int expect, const std::string& field, const std::string& noun);
+
 // params[key] when params is an object holding it, else null (for members parsed in an
 // initialiser list before the ParamReader runs; the reader then reports a missing key).
 inline const Json& MemberOrNull(const Json& params, const char* key) {

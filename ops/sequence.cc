@@ -150,6 +150,20 @@ def edit_mesh(obj):
     return obj.data
 
 
+def open_bmesh(obj):
+    """(mesh, bmesh) for a bmesh edit; pair with close_bmesh."""
+    me = edit_mesh(obj)
+    bm = bmesh.new()
+    bm.from_mesh(me)
+    return me, bm
+
+
+def close_bmesh(me, bm):
+    bm.to_mesh(me)
+    bm.free()
+    me.update()
+
+
 def export_obj(obj, path):
     dg = bpy.context.evaluated_depsgraph_get()
     me = obj.evaluated_get(dg).to_mesh()

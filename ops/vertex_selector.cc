@@ -23,11 +23,7 @@ VertexSelector::VertexSelector(const Json& json, const std::string& field) : fie
     }
   }
   if (json.contains("indices")) {
-    const Json& list = json["indices"];
-    if (!list.is_array() || list.empty()) throw FieldError(field + ".indices", "must be a non-empty array");
-    for (const Json& i : list) {
-      indices_.push_back(static_cast<int>(CheckedNumber(i, field + ".indices", 0, 1e9)));
-    }
+    indices_ = CheckedIndices(json["indices"], field + ".indices");
   } else if (json.contains("box")) {
     box_ = Box::Parse(json["box"], field + ".box");
   } else {
@@ -48,10 +44,7 @@ std::vector<int> VertexSelector::Resolve(const Mesh& mesh) const {
       if (box_.Contains(mesh.vertices[v])) found.push_back(v);
     }
   }
-  if (found.empty()) throw FieldError(field_, "selects no vertex at this step");
-  if (expect_ >= 0 && static_cast<int>(found.size()) != expect_) {
-    throw FieldError(field_, "selects " + std::to_string(found.size()) + " vertices, expected " + std::to_string(expect_));
-  }
+  CheckSelectionCount(found.size(), expect_, field_, "vertices");
   return found;
 }
 
