@@ -69,6 +69,21 @@ Json ConvertGtSequence(const std::filesystem::path& path, std::string* why_not) 
     } else if (name == "LoopCut") {
       params = {{"axis", p.at("axis")}, {"cuts", p.at("cuts")},
                 {"near", p.value("near", Json::array({0.0, 0.0, 0.0}))}};
+    } else if (name == "Boolean") {
+      const Json& prim = p.at("primitive");
+      const std::string type = prim.at("type");
+      if (p.value("solver", "EXACT") != "EXACT" || p.value("use_self", false) || p.value("use_hole_tolerant", false)) {
+        *why_not = "Boolean other than the EXACT solver without self intersection and hole tolerance";
+        return nullptr;
+      }
+      Json size = prim.value("size", Json());
+      if (type != "cube") {
+        const double diameter = 2 * prim.at("radius").get<double>();
+        size = Json::array({diameter, diameter, prim.at("depth")});
+      }
+      params = {{"operation", p.at("operation")}, {"primitive", type}, {"size", size},
+                {"rotation_deg", prim.value("rotation_deg", Json::array({0.0, 0.0, 0.0}))},
+                {"location", prim.value("location", Json::array({0.0, 0.0, 0.0}))}};
     } else {
       *why_not = "no converter for " + name + " yet";
       return nullptr;

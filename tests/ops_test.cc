@@ -131,7 +131,7 @@ TEST_P(ParityCase, GateZeroIsIdentity) {
     op.Prepare(inputs[i]);
     Mesh out;
     op.Evaluate(op.params().data(), 0.0, inputs[i].vertices, &out.vertices);
-    out.faces = op.output_faces();
+    out.faces = op.OutputFaces(0.0);
     const double tolerance =
         1e-12 + (op.Name() == "Subdivision" ? MaxNonPlanarity(inputs[i]) / BoundingBoxDiagonal(inputs[i]) : 0);
     EXPECT_LT(SymmetricSurfaceDistanceRelative(inputs[i], out), tolerance) << "op " << i << " " << op.Name();
