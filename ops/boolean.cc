@@ -52,39 +52,166 @@ struct SourceTriangle {
   int face;
 };
 
-// Blender's triangulation of the boolean's operands: quads along the 0-2 diagonal, other
-// polygons by ear clipping that tries ears from vertex 1 on (a fan from vertex 0 when convex).
+int DominantAxis(const Vec3d& a, const Vec3d& b, const Vec3d& c) {
+  int axis;
+  (b - a).cross(c - a).cwiseAbs().maxCoeff(&axis);
+  return axis;
+}
+
+// Flips edges between triangles of the same group (>= 0) until each is locally Delaunay in the
+// projection of triangle t along coordinate axis[t]: the constrained Delaunay triangulation of
+// each group, with the group's outline as constraints. A cocircular tie is never flipped.
+void DelaunayFlips(const Positions<double>& vertices, const std::vector<int>& group, const std::vector<int>& axis,
+                   std::vector<std::array<int, 3>>* triangles) {
+  Vec3d lo = vertices[0], hi = vertices[0];
+  for (const Vec3d& v : vertices) lo = lo.cwiseMin(v), hi = hi.cwiseMax(v);
+  const double tie = 1e-12 * std::pow((hi - lo).norm(), 4);
+  for (int pass = 0; pass < 1000; ++pass) {
+    std::map<std::pair<int, int>, int> triangle_of_edge;  // directed edge -> triangle
+    for (size_t t = 0; t < triangles->size(); ++t) {
+      const auto& c = (*triangles)[t];
+      for (int i = 0; i < 3; ++i) triangle_of_edge[{c[i], c[(i + 1) % 3]}] = static_cast<int>(t);
+    }
+    std::vector<bool> touched(triangles->size(), false);
+    bool flipped = false;
+    for (const auto& e : triangle_of_edge) {
+      const int u = e.first.first, v = e.first.second;
+      const auto twin = triangle_of_edge.find({v, u});
+      if (u > v || twin == triangle_of_edge.end()) continue;
+      const int left = e.second, right = twin->second;
+      if (group[left] < 0 || group[left] != group[right] || touched[left] || touched[right]) continue;
+      auto third = [&](int t) {
+        for (int c : (*triangles)[t]) {
+          if (c != u && c != v) return c;
+        }
+        return -1;
+      };
+      const int w = third(left), x = third(right);
+      auto project = [&](int vertex) {
+        const Vec3d& q = vertices[vertex];
+        return Eigen::Vector2d(q[(axis[left] + 1) % 3], q[(axis[left] + 2) % 3]);
+      };
+      const Eigen::Vector2d pu = project(u), pv = project(v), pw = project(w), px = project(x);
+      const double orientation = (pv - pu).x() * (pw - pu).y() - (pv - pu).y() * (pw - pu).x();
+      Eigen::Matrix3d in_circle;
+      const Eigen::Vector2d rows[3] = {pu - px, pv - px, pw - px};
+      for (int i = 0; i < 3; ++i) in_circle.row(i) << rows[i].x(), rows[i].y(), rows[i].squaredNorm();
+      if (in_circle.determinant() * (orientation > 0 ? 1 : -1) <= tie) continue;
+      // (u, v, w) and (v, u, x) become (u, x, w) and (x, v, w), same winding.
+      (*triangles)[left] = {u, x, w};
+      (*triangles)[right] = {x, v, w};
+      touched[left] = touched[right] = flipped = true;
+    }
+    if (!flipped) return;
+  }
+}
+
+// Sign of the turn a -> b -> c in 2D: 1 convex (counter-clockwise), -1 concave, 0 straight.
+int TurnSign(const Eigen::Vector2d& a, const Eigen::Vector2d& b, const Eigen::Vector2d& c) {
+  const double area = (a.x() - c.x()) * (b.y() - c.y()) - (a.y() - c.y()) * (b.x() - c.x());
+  return area > 0 ? 1 : (area < 0 ? -1 : 0);
+}
+
+// Blender's BLI_polyfill_calc on a counter-clockwise 2D polygon, as the exact boolean calls it:
+// ear clipping from vertex 0 that skips to every other vertex after a cut and sweeps back and
+// forth when the next candidate is not convex. Returns #P - 2 triangles of polygon positions.
+std::vector<std::array<int, 3>> PolyFill(const std::vector<Eigen::Vector2d>& co) {
+  const int n = static_cast<int>(co.size());
+  std::vector<int> next(n), prev(n), sign(n);
+  for (int i = 0; i < n; ++i) next[i] = (i + 1) % n, prev[i] = (i + n - 1) % n;
+  int num_concave = 0;
+  for (int i = 0; i < n; ++i) {
+    sign[i] = TurnSign(co[prev[i]], co[i], co[next[i]]);
+    num_concave += sign[i] != 1;
+  }
+  auto is_ear = [&](int tip) {
+    if (num_concave == 0) return true;
+    if (sign[tip] != 1) return false;
+    const Eigen::Vector2d &v1 = co[prev[tip]], &v2 = co[tip], &v3 = co[next[tip]];
+    for (int c = next[next[tip]]; c != prev[tip]; c = next[c]) {
+      if (sign[c] == 1) continue;
+      if (TurnSign(v1, v2, co[c]) != -1 && TurnSign(v2, v3, co[c]) != -1 && TurnSign(v3, v1, co[c]) != -1) {
+        return false;
+      }
+    }
+    return true;
+  };
+  std::vector<std::array<int, 3>> triangles;
+  int remaining = n, init = 0;
+  bool reverse = false;
+  while (remaining > 3) {
+    int ear = init;
+    bool found = false;
+    for (int i = 0; i < remaining && !found; ++i) {
+      if (is_ear(ear)) found = true;
+      else ear = reverse ? prev[ear] : next[ear];
+    }
+    if (!found) ear = init;  // a degenerate polygon; the caller falls back on exact triangulation
+    const int p = prev[ear], q = next[ear];
+    triangles.push_back({p, ear, q});
+    next[p] = q;
+    prev[q] = p;
+    --remaining;
+    for (int v : {p, q}) {
+      if (sign[v] == 1) continue;
+      sign[v] = TurnSign(co[prev[v]], co[v], co[next[v]]);
+      if (sign[v] == 1) --num_concave;
+    }
+    init = reverse ? prev[p] : next[q];
+    if (sign[init] != 1) {
+      init = reverse ? prev[init] : next[init];
+      reverse = !reverse;
+    }
+  }
+  triangles.push_back({prev[init], init, next[init]});
+  return triangles;
+}
+
+// Blender's triangulation of the boolean's operands (mesh_boolean's triangulate_poly): quads
+// along the 0-2 diagonal unless that splits them badly (then 1-3), larger polygons by PolyFill in
+// the plane perpendicular to their normal; where that makes a degenerate triangle, Blender uses
+// its exact constrained Delaunay triangulation, emulated here by flips (a cocircular tie left as
+// the ear clipping made it, where Blender's choice follows its own insertion order).
 std::vector<SourceTriangle> Triangulate(const Mesh& mesh) {
   std::vector<SourceTriangle> triangles;
+  std::vector<int> group, axis;
   for (int f = 0; f < mesh.NumFaces(); ++f) {
-    std::vector<int> loop = mesh.faces[f];
-    const Vec3d normal = FaceAreaNormal(mesh.vertices, loop);
-    while (loop.size() > 3) {
-      const int k = static_cast<int>(loop.size());
-      int ear = 1;
-      for (int i = 1; i <= k; ++i) {
-        const int c = i % k;
-        const Vec3d& a = mesh.vertices[loop[(c + k - 1) % k]];
-        const Vec3d& b = mesh.vertices[loop[c]];
-        const Vec3d& d = mesh.vertices[loop[(c + 1) % k]];
-        if ((b - a).cross(d - b).dot(normal) <= 0) continue;  // reflex corner
-        bool empty = true;
-        for (int j = 0; j < k && empty; ++j) {
-          if (j == c || j == (c + 1) % k || j == (c + k - 1) % k) continue;
-          const Vec3d& q = mesh.vertices[loop[j]];
-          empty = !((b - a).cross(q - a).dot(normal) > 0 && (d - b).cross(q - b).dot(normal) > 0 &&
-                    (a - d).cross(q - d).dot(normal) > 0);
-        }
-        if (empty) {
-          ear = c;
-          break;
-        }
-      }
-      triangles.push_back({{loop[(ear + k - 1) % k], loop[ear], loop[(ear + 1) % k]}, f});
-      loop.erase(loop.begin() + ear);
+    const Polygon& loop = mesh.faces[f];
+    const int k = static_cast<int>(loop.size());
+    const Vec3d normal = FaceAreaNormal(mesh.vertices, loop).normalized();
+    int dominant;
+    normal.cwiseAbs().maxCoeff(&dominant);
+    std::vector<std::array<int, 3>> local;
+    if (k == 3) {
+      local = {{0, 1, 2}};
+    } else if (k == 4) {
+      const Vec3d& v0 = mesh.vertices[loop[0]];
+      const Vec3d d02 = mesh.vertices[loop[2]] - v0;
+      const bool flip = (mesh.vertices[loop[1]] - v0).cross(d02).dot((mesh.vertices[loop[3]] - v0).cross(d02)) > 0;
+      local = flip ? std::vector<std::array<int, 3>>{{0, 1, 3}, {1, 2, 3}}
+                   : std::vector<std::array<int, 3>>{{0, 1, 2}, {0, 2, 3}};
+    } else {
+      const Vec3d u = normal.unitOrthogonal(), v = normal.cross(u);
+      std::vector<Eigen::Vector2d> co;
+      for (int i : loop) co.emplace_back(u.dot(mesh.vertices[i]), v.dot(mesh.vertices[i]));
+      local = PolyFill(co);
     }
-    triangles.push_back({{loop[0], loop[1], loop[2]}, f});
+    bool degenerate = false;
+    for (const auto& t : local) {
+      const Vec3d& a = mesh.vertices[loop[t[0]]];
+      const Vec3d da = mesh.vertices[loop[t[2]]] - a, db = mesh.vertices[loop[t[2]]] - mesh.vertices[loop[t[1]]];
+      degenerate = degenerate || da.cross(db).squaredNorm() < 1e-8 * da.squaredNorm() * db.squaredNorm();
+    }
+    for (const auto& t : local) {
+      triangles.push_back({{loop[t[0]], loop[t[1]], loop[t[2]]}, f});
+      group.push_back(degenerate ? f : -1);
+      axis.push_back(dominant);
+    }
   }
+  std::vector<std::array<int, 3>> corners;
+  for (const SourceTriangle& t : triangles) corners.push_back(t.corners);
+  DelaunayFlips(mesh.vertices, group, axis, &corners);
+  for (size_t t = 0; t < triangles.size(); ++t) triangles[t].corners = corners[t];
   return triangles;
 }
 
@@ -232,11 +359,11 @@ void BooleanOp::Prepare(const Mesh& input) {
     if (best <= 1e-6) throw FieldError("operation", "internal: an intersection point of the boolean has no source");
   }
 
-  // Source triangle (and so polygon) of each result triangle: the operand triangle its centroid
-  // lies on, parallel to it; the input mesh wins where both operands overlap.
+  // Source polygon of each result triangle: that of the operand triangle its centroid lies on,
+  // parallel to it; the input mesh wins where both operands overlap.
   const int num_result_triangles = static_cast<int>(result.triangles.size());
-  std::vector<int> source_triangle(num_result_triangles, -1);  // input's, then primitive's
   std::vector<int> source_face(num_result_triangles, -1);      // input's, then primitive's
+  std::vector<int> source_triangle(num_result_triangles, -1);  // input's, then primitive's
   for (int r = 0; r < num_result_triangles; ++r) {
     const auto& t = result.triangles[r];
     const Vec3d& p0 = result.vertices[t[0]];
@@ -245,8 +372,7 @@ void BooleanOp::Prepare(const Mesh& input) {
     const Vec3d centroid = (p0 + p1 + p2) / 3;
     const Vec3d normal = (p1 - p0).cross(p2 - p0).normalized();
     double best = 1 - 1e-6;
-    int offset = 0;
-    for (int m = 0; m < 2 && source_triangle[r] < 0; ++m) {
+    for (int m = 0; m < 2 && source_face[r] < 0; ++m) {
       const TriangleSoup& operand = *operands[m];
       const std::vector<SourceTriangle>& triangles = m == 0 ? input_triangles : primitive_triangles;
       for (size_t k = 0; k < triangles.size(); ++k) {
@@ -255,14 +381,25 @@ void BooleanOp::Prepare(const Mesh& input) {
         if (!OnTriangle(centroid, operand.vertices[c[0]], operand.vertices[c[1]], operand.vertices[c[2]], tolerance, &n)) continue;
         if (std::abs(n.dot(normal)) > best) {
           best = std::abs(n.dot(normal));
-          source_triangle[r] = offset + static_cast<int>(k);
           source_face[r] = (m == 0 ? 0 : input.NumFaces()) + triangles[k].face;
+          source_triangle[r] = (m == 0 ? 0 : static_cast<int>(input_triangles.size())) + static_cast<int>(k);
         }
       }
-      offset += static_cast<int>(triangles.size());
     }
-    if (source_triangle[r] < 0) throw FieldError("operation", "internal: a face of the boolean has no source");
+    if (source_face[r] < 0) throw FieldError("operation", "internal: a face of the boolean has no source");
   }
+
+  // Blender retriangulates each operand triangle with a constrained Delaunay triangulation; CGAL's
+  // retriangulation need not be Delaunay, and the merge below depends on the triangles.
+  std::vector<int> dominant_axis(num_result_triangles);
+  for (int r = 0; r < num_result_triangles; ++r) {
+    const int k = source_triangle[r];
+    const bool on_input = k < static_cast<int>(input_triangles.size());
+    const TriangleSoup& operand = on_input ? a : b;
+    const auto& c = (on_input ? input_triangles[k] : primitive_triangles[k - input_triangles.size()]).corners;
+    dominant_axis[r] = DominantAxis(operand.vertices[c[0]], operand.vertices[c[1]], operand.vertices[c[2]]);
+  }
+  DelaunayFlips(result.vertices, source_triangle, dominant_axis, &result.triangles);
 
   // Merge the triangles of each source polygon (see the header), then dissolve new vertices
   // that only continue a straight chain between the same two polygons.
@@ -281,7 +418,6 @@ void BooleanOp::Prepare(const Mesh& input) {
     for (int i = 0; i < 3; ++i) triangle_of_edge[{result.triangles[r][i], result.triangles[r][(i + 1) % 3]}] = r;
   }
   struct Candidate {
-    int stage;  // 0: inside one operand triangle, 1: along a diagonal of the triangulation
     double length_squared;
     int from, to;  // directed edge of triangle `left`
     int left, right;
@@ -293,11 +429,10 @@ void BooleanOp::Prepare(const Mesh& input) {
     const int left = e.second, right = twin->second;
     if (source_face[left] != source_face[right]) continue;
     const double length_squared = (result.vertices[e.first.first] - result.vertices[e.first.second]).squaredNorm();
-    candidates.push_back({source_triangle[left] == source_triangle[right] ? 0 : 1, length_squared,
-                          e.first.first, e.first.second, left, right});
+    candidates.push_back({length_squared, e.first.first, e.first.second, left, right});
   }
   std::stable_sort(candidates.begin(), candidates.end(), [](const Candidate& x, const Candidate& y) {
-    return x.stage != y.stage ? x.stage < y.stage : x.length_squared > y.length_squared;
+    return x.length_squared > y.length_squared;
   });
   for (const Candidate& c : candidates) {
     const int left = find(c.left), right = find(c.right);
