@@ -317,18 +317,43 @@ void BooleanOp::Prepare(const Mesh& input) {
       }
     }
   }
+  // Only edges and triangles within the other operand's bounding box can take part in crossings.
+  Eigen::AlignedBox3d boxes[2];
+  for (int m = 0; m < 2; ++m) {
+    for (const Vec3d& v : operands[m]->vertices) boxes[m].extend(v);
+    boxes[m].extend(boxes[m].min() - Vec3d::Constant(tolerance)).extend(boxes[m].max() + Vec3d::Constant(tolerance));
+  }
+  auto near_other = [&](int m, std::initializer_list<int> corners) {
+    Eigen::AlignedBox3d box;
+    for (int v : corners) box.extend(operands[m]->vertices[v]);
+    return box.intersects(boxes[1 - m]);
+  };
+  std::vector<std::array<int, 3>> near_triangles[2];
+  for (int m = 0; m < 2; ++m) {
+    edges[m].erase(std::remove_if(edges[m].begin(), edges[m].end(),
+                                  [&](const std::pair<int, int>& e) { return !near_other(m, {e.first, e.second}); }),
+                   edges[m].end());
+    for (const auto& t : operands[m]->triangles) {
+      if (near_other(m, {t[0], t[1], t[2]})) near_triangles[m].push_back(t);
+    }
+  }
+  std::map<std::array<double, 3>, int> vertex_at[2];  // exact coordinates -> operand vertex
+  for (int m = 0; m < 2; ++m) {
+    for (size_t v = 0; v < operands[m]->vertices.size(); ++v) {
+      const Vec3d& q = operands[m]->vertices[v];
+      vertex_at[m].insert({{q.x(), q.y(), q.z()}, static_cast<int>(v)});
+    }
+  }
   std::vector<Source> sources(result.vertices.size());
   for (size_t r = 0; r < result.vertices.size(); ++r) {
     const Vec3d& p = result.vertices[r];
     Source& s = sources[r];
     s.vertex = -1;
     for (int m = 0; m < 2 && s.vertex < 0; ++m) {
-      for (size_t v = 0; v < operands[m]->vertices.size(); ++v) {
-        if ((operands[m]->vertices[v] - p).norm() <= tolerance) {
-          s.kind = m == 0 ? Source::kInput : Source::kPrimitive;
-          s.vertex = static_cast<int>(v);
-          break;
-        }
+      const auto it = vertex_at[m].find({p.x(), p.y(), p.z()});
+      if (it != vertex_at[m].end()) {
+        s.kind = m == 0 ? Source::kInput : Source::kPrimitive;
+        s.vertex = it->second;
       }
     }
     if (s.vertex >= 0) continue;
@@ -342,7 +367,7 @@ void BooleanOp::Prepare(const Mesh& input) {
         const Vec3d& to = mine.vertices[e.second];
         if (SegmentDistance(p, from, to) > tolerance) continue;
         const Vec3d direction = (to - from).normalized();
-        for (const auto& t : other.triangles) {
+        for (const auto& t : near_triangles[1 - m]) {
           Vec3d n;
           if (!OnTriangle(p, other.vertices[t[0]], other.vertices[t[1]], other.vertices[t[2]], tolerance, &n)) continue;
           const double conditioning = std::abs(n.dot(direction));
@@ -359,13 +384,41 @@ void BooleanOp::Prepare(const Mesh& input) {
     if (best <= 1e-6) throw FieldError("operation", "internal: an intersection point of the boolean has no source");
   }
 
-  // Source polygon of each result triangle: that of the operand triangle its centroid lies on,
-  // parallel to it; the input mesh wins where both operands overlap.
+  // Source polygon of each result triangle: that of the operand triangle it is (uncut), else the
+  // one its centroid lies on, parallel to it; the input mesh wins where both operands overlap.
   const int num_result_triangles = static_cast<int>(result.triangles.size());
   std::vector<int> source_face(num_result_triangles, -1);      // input's, then primitive's
   std::vector<int> source_triangle(num_result_triangles, -1);  // input's, then primitive's
+  std::map<std::array<int, 3>, int> triangle_with_corners[2];
+  std::vector<bool> near[2];
+  for (int m = 0; m < 2; ++m) {
+    const std::vector<SourceTriangle>& triangles = m == 0 ? input_triangles : primitive_triangles;
+    for (size_t k = 0; k < triangles.size(); ++k) {
+      std::array<int, 3> c = triangles[k].corners;
+      near[m].push_back(near_other(m, {c[0], c[1], c[2]}));
+      std::sort(c.begin(), c.end());
+      triangle_with_corners[m][c] = static_cast<int>(k);
+    }
+  }
   for (int r = 0; r < num_result_triangles; ++r) {
     const auto& t = result.triangles[r];
+    for (int m = 0; m < 2 && source_face[r] < 0; ++m) {
+      const Source::Kind kind = m == 0 ? Source::kInput : Source::kPrimitive;
+      std::array<int, 3> corners;
+      bool all_original = true;
+      for (int i = 0; i < 3; ++i) {
+        all_original = all_original && sources[t[i]].kind == kind;
+        corners[i] = sources[t[i]].vertex;
+      }
+      if (!all_original) continue;
+      std::sort(corners.begin(), corners.end());
+      const auto it = triangle_with_corners[m].find(corners);
+      if (it == triangle_with_corners[m].end()) continue;
+      const std::vector<SourceTriangle>& triangles = m == 0 ? input_triangles : primitive_triangles;
+      source_face[r] = (m == 0 ? 0 : input.NumFaces()) + triangles[it->second].face;
+      source_triangle[r] = (m == 0 ? 0 : static_cast<int>(input_triangles.size())) + it->second;
+    }
+    if (source_face[r] >= 0) continue;
     const Vec3d& p0 = result.vertices[t[0]];
     const Vec3d& p1 = result.vertices[t[1]];
     const Vec3d& p2 = result.vertices[t[2]];
@@ -376,6 +429,7 @@ void BooleanOp::Prepare(const Mesh& input) {
       const TriangleSoup& operand = *operands[m];
       const std::vector<SourceTriangle>& triangles = m == 0 ? input_triangles : primitive_triangles;
       for (size_t k = 0; k < triangles.size(); ++k) {
+        if (!near[m][k]) continue;
         const auto& c = triangles[k].corners;
         Vec3d n;
         if (!OnTriangle(centroid, operand.vertices[c[0]], operand.vertices[c[1]], operand.vertices[c[2]], tolerance, &n)) continue;
@@ -481,6 +535,7 @@ void BooleanOp::Prepare(const Mesh& input) {
     output_faces_.push_back(f);
   }
   num_output_vertices_ = static_cast<int>(sources_.size());
+  if (output_faces_.empty()) throw FieldError("operation", "the result is empty (the primitive contains the whole mesh)");
 }
 
 const std::vector<Polygon>& BooleanOp::OutputFaces(double gate) const {
