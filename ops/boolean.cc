@@ -96,7 +96,13 @@ void DelaunayFlips(const Positions<double>& vertices, const std::vector<int>& gr
       Eigen::Matrix3d in_circle;
       const Eigen::Vector2d rows[3] = {pu - px, pv - px, pw - px};
       for (int i = 0; i < 3; ++i) in_circle.row(i) << rows[i].x(), rows[i].y(), rows[i].squaredNorm();
-      if (in_circle.determinant() * (orientation > 0 ? 1 : -1) <= tie) continue;
+      const double side = orientation > 0 ? 1 : -1;
+      auto area = [](const Eigen::Vector2d& a, const Eigen::Vector2d& b, const Eigen::Vector2d& c) {
+        return (b - a).x() * (c - a).y() - (b - a).y() * (c - a).x();
+      };
+      // Only a strictly convex quad can flip (guards against degenerate triangles).
+      if (side * area(pu, px, pw) <= 0 || side * area(px, pv, pw) <= 0) continue;
+      if (in_circle.determinant() * side <= tie) continue;
       // (u, v, w) and (v, u, x) become (u, x, w) and (x, v, w), same winding.
       (*triangles)[left] = {u, x, w};
       (*triangles)[right] = {x, v, w};
@@ -167,6 +173,39 @@ std::vector<std::array<int, 3>> PolyFill(const std::vector<Eigen::Vector2d>& co)
   return triangles;
 }
 
+// Ear clipping of a counter-clockwise 2D polygon that only cuts strictly convex ears with no
+// other vertex inside or on them (no degenerate triangles where the polygon has straight
+// corners), trying tips from vertex 1 on. Falls back on any tip for a polygon it cannot cut.
+std::vector<std::array<int, 3>> EarClip(const std::vector<Eigen::Vector2d>& co) {
+  std::vector<int> loop(co.size());
+  std::iota(loop.begin(), loop.end(), 0);
+  std::vector<std::array<int, 3>> triangles;
+  while (loop.size() > 3) {
+    const int k = static_cast<int>(loop.size());
+    int ear = 1;
+    for (int i = 1; i <= k; ++i) {
+      const int c = i % k;
+      const int a = loop[(c + k - 1) % k], b = loop[c], d = loop[(c + 1) % k];
+      if (TurnSign(co[a], co[b], co[d]) != 1) continue;
+      bool empty = true;
+      for (int j = 0; j < k && empty; ++j) {
+        const int q = loop[j];
+        if (q == a || q == b || q == d || co[q] == co[a] || co[q] == co[b] || co[q] == co[d]) continue;
+        empty = !(TurnSign(co[a], co[b], co[q]) != -1 && TurnSign(co[b], co[d], co[q]) != -1 &&
+                  TurnSign(co[d], co[a], co[q]) != -1);
+      }
+      if (empty) {
+        ear = c;
+        break;
+      }
+    }
+    triangles.push_back({loop[(ear + k - 1) % k], loop[ear], loop[(ear + 1) % k]});
+    loop.erase(loop.begin() + ear);
+  }
+  triangles.push_back({loop[0], loop[1], loop[2]});
+  return triangles;
+}
+
 // Blender's triangulation of the boolean's operands (mesh_boolean's triangulate_poly): quads
 // along the 0-2 diagonal unless that splits them badly (then 1-3), larger polygons by PolyFill in
 // the plane perpendicular to their normal; where that makes a degenerate triangle, Blender uses
@@ -201,6 +240,12 @@ std::vector<SourceTriangle> Triangulate(const Mesh& mesh) {
       const Vec3d& a = mesh.vertices[loop[t[0]]];
       const Vec3d da = mesh.vertices[loop[t[2]]] - a, db = mesh.vertices[loop[t[2]]] - mesh.vertices[loop[t[1]]];
       degenerate = degenerate || da.cross(db).squaredNorm() < 1e-8 * da.squaredNorm() * db.squaredNorm();
+    }
+    if (degenerate) {
+      const Vec3d u = normal.unitOrthogonal(), v = normal.cross(u);
+      std::vector<Eigen::Vector2d> co;
+      for (int i : loop) co.emplace_back(u.dot(mesh.vertices[i]), v.dot(mesh.vertices[i]));
+      local = EarClip(co);
     }
     for (const auto& t : local) {
       triangles.push_back({{loop[t[0]], loop[t[1]], loop[t[2]]}, f});

@@ -31,9 +31,7 @@ std::string ToSurfaceMesh(const TriangleSoup& soup, const std::string& name, Sur
   return "";
 }
 
-}  // namespace
-
-std::string CgalBoolean(const TriangleSoup& a, const TriangleSoup& b, BooleanKind kind, TriangleSoup* out) {
+std::string CgalBooleanUnchecked(const TriangleSoup& a, const TriangleSoup& b, BooleanKind kind, TriangleSoup* out) {
   SurfaceMesh mesh_a, mesh_b, result;
   std::string problem = ToSurfaceMesh(a, "the input mesh", &mesh_a);
   if (problem.empty()) problem = ToSurfaceMesh(b, "the primitive", &mesh_b);
@@ -58,6 +56,17 @@ std::string CgalBoolean(const TriangleSoup& a, const TriangleSoup& b, BooleanKin
     out->triangles.push_back(t);
   }
   return "";
+}
+
+}  // namespace
+
+std::string CgalBoolean(const TriangleSoup& a, const TriangleSoup& b, BooleanKind kind, TriangleSoup* out) {
+  try {
+    return CgalBooleanUnchecked(a, b, kind, out);
+  } catch (const std::exception& e) {  // CGAL's failed preconditions, on degenerate input
+    const std::string what = e.what();
+    return "CGAL cannot compute the boolean: " + what.substr(0, std::min(what.find('\n'), size_t{120}));
+  }
 }
 
 }  // namespace opgraph
