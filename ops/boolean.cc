@@ -304,16 +304,17 @@ BooleanOp::BooleanOp(const Json& params) {
   const char* axes[3] = {"x", "y", "z"};
   for (int i = 0; i < 3; ++i) AddParam(std::string("size_") + axes[i], 1e-6, 1e6, size[i], size[i]);
   for (int i = 0; i < 3; ++i) {
-    AddParam(std::string("rotation_") + axes[i], -4 * kPi, 4 * kPi, DegToRad(rotation_deg[i]), DegToRad(rotation_deg[i]));
+    const double radians = DegToRad(rotation_deg[i]);
+    AddParam(std::string("rotation_") + axes[i], -4 * kPi, 4 * kPi, radians, radians);
   }
   for (int i = 0; i < 3; ++i) AddParam(std::string("location_") + axes[i], -1e6, 1e6, location[i], location[i]);
   template_ = primitive_ == "cube" ? MakeCube(1.0) : MakePrism(Segments(primitive_));
 }
 
 template <typename T>
-Vec3<T> BooleanOp::PrimitiveVertex(const T* p, int v) const {
+Vec3<T> BooleanOp::PrimitiveVertex(const T* p, const Eigen::Matrix<T, 3, 3>& rotation, int v) const {
   const Vec3<T> scaled = template_.vertices[v].cast<T>().cwiseProduct(Vec3<T>(p[0], p[1], p[2]));
-  return EulerXYZToMatrix<T>(p[3], p[4], p[5]) * scaled + Vec3<T>(p[6], p[7], p[8]);
+  return rotation * scaled + Vec3<T>(p[6], p[7], p[8]);
 }
 
 void BooleanOp::Prepare(const Mesh& input) {
@@ -333,7 +334,10 @@ void BooleanOp::Prepare(const Mesh& input) {
 
   // Both operands as triangle soups; the primitive's vertices follow the input's.
   Mesh primitive = template_;
-  for (int v = 0; v < primitive.NumVertices(); ++v) primitive.vertices[v] = PrimitiveVertex(params_.data(), v);
+  const Eigen::Matrix3d rotation = EulerXYZToMatrix(params_[3], params_[4], params_[5]);
+  for (int v = 0; v < primitive.NumVertices(); ++v) {
+    primitive.vertices[v] = PrimitiveVertex(params_.data(), rotation, v);
+  }
   const std::vector<SourceTriangle> input_triangles = Triangulate(input);
   const std::vector<SourceTriangle> primitive_triangles = Triangulate(primitive);
   TriangleSoup a, b, result;
@@ -477,7 +481,8 @@ void BooleanOp::Prepare(const Mesh& input) {
         if (!near[m][k]) continue;
         const auto& c = triangles[k].corners;
         Vec3d n;
-        if (!OnTriangle(centroid, operand.vertices[c[0]], operand.vertices[c[1]], operand.vertices[c[2]], tolerance, &n)) continue;
+        const Vec3d& c0 = operand.vertices[c[0]];
+        if (!OnTriangle(centroid, c0, operand.vertices[c[1]], operand.vertices[c[2]], tolerance, &n)) continue;
         if (std::abs(n.dot(normal)) > best) {
           best = std::abs(n.dot(normal));
           source_face[r] = (m == 0 ? 0 : input.NumFaces()) + triangles[k].face;
@@ -580,7 +585,9 @@ void BooleanOp::Prepare(const Mesh& input) {
     output_faces_.push_back(f);
   }
   num_output_vertices_ = static_cast<int>(sources_.size());
-  if (output_faces_.empty()) throw FieldError("operation", "the result is empty (the primitive contains the whole mesh)");
+  if (output_faces_.empty()) {
+    throw FieldError("operation", "the result is empty (the primitive contains the whole mesh)");
+  }
 }
 
 const std::vector<Polygon>& BooleanOp::OutputFaces(double gate) const {
@@ -593,19 +600,20 @@ void BooleanOp::Apply(const T* p, const T& gate, const Positions<T>& in, Positio
     *out = in;
     return;
   }
+  const Eigen::Matrix<T, 3, 3> rotation = EulerXYZToMatrix<T>(p[3], p[4], p[5]);
   out->resize(sources_.size());
   for (size_t i = 0; i < sources_.size(); ++i) {
     const Source& s = sources_[i];
     if (s.kind == Source::kInput) {
       (*out)[i] = in[s.vertex];
     } else if (s.kind == Source::kPrimitive) {
-      (*out)[i] = PrimitiveVertex(p, s.vertex);
+      (*out)[i] = PrimitiveVertex(p, rotation, s.vertex);
     } else if (s.edge_on_primitive) {
-      (*out)[i] = Crossing<T>(PrimitiveVertex(p, s.edge[0]), PrimitiveVertex(p, s.edge[1]), in[s.plane[0]],
-                              in[s.plane[1]], in[s.plane[2]]);
+      (*out)[i] = Crossing<T>(PrimitiveVertex(p, rotation, s.edge[0]), PrimitiveVertex(p, rotation, s.edge[1]),
+                              in[s.plane[0]], in[s.plane[1]], in[s.plane[2]]);
     } else {
-      (*out)[i] = Crossing<T>(in[s.edge[0]], in[s.edge[1]], PrimitiveVertex(p, s.plane[0]),
-                              PrimitiveVertex(p, s.plane[1]), PrimitiveVertex(p, s.plane[2]));
+      (*out)[i] = Crossing<T>(in[s.edge[0]], in[s.edge[1]], PrimitiveVertex(p, rotation, s.plane[0]),
+                              PrimitiveVertex(p, rotation, s.plane[1]), PrimitiveVertex(p, rotation, s.plane[2]));
     }
   }
 }

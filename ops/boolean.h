@@ -60,8 +60,9 @@ class BooleanOp : public OpBase<BooleanOp> {
     std::array<int, 3> plane;
   };
 
+  // Primitive vertex v under the parameters p (rotation: the matrix of p[3..5]).
   template <typename T>
-  Vec3<T> PrimitiveVertex(const T* p, int v) const;
+  Vec3<T> PrimitiveVertex(const T* p, const Eigen::Matrix<T, 3, 3>& rotation, int v) const;
 
   bool difference_ = false;
   std::string primitive_;

@@ -222,7 +222,8 @@ TEST(GtDev, SequencesReproduceBlenderModels) {
 TEST(Boolean, RejectsOpenInput) {
   Mesh open = MakeCube(2.0);
   open.faces.pop_back();
-  std::unique_ptr<Op> op = CreateOp("Boolean", Json::parse(R"({"operation": "UNION", "primitive": "cube", "size": [1, 1, 1]})"));
+  std::unique_ptr<Op> op =
+      CreateOp("Boolean", Json::parse(R"({"operation": "UNION", "primitive": "cube", "size": [1, 1, 1]})"));
   try {
     op->Prepare(open);
     FAIL() << "no error for an open input";
