@@ -570,6 +570,14 @@ void BooleanOp::Prepare(const Mesh& input) {
       else if (neighbours[v] != around) dissolve[v] = false;
     }
   }
+  for (int v = 0; v < num_result; ++v) {
+    if (!dissolve[v] || neighbours[v].first < 0) continue;
+    // Only a straight continuation: a crossing where the chain bends (as across the diagonal of a
+    // non-planar quad) is kept.
+    const Vec3d& from = result.vertices[neighbours[v].first];
+    const Vec3d& to = result.vertices[neighbours[v].second];
+    dissolve[v] = (to - from).cross(result.vertices[v] - from).norm() <= tolerance * (to - from).norm();
+  }
   std::vector<int> output_index(num_result, -1);
   sources_.clear();
   output_faces_.clear();
