@@ -572,11 +572,13 @@ void BooleanOp::Prepare(const Mesh& input) {
   }
   for (int v = 0; v < num_result; ++v) {
     if (!dissolve[v] || neighbours[v].first < 0) continue;
-    // Only a straight continuation: a crossing where the chain bends (as across the diagonal of a
-    // non-planar quad) is kept.
-    const Vec3d& from = result.vertices[neighbours[v].first];
-    const Vec3d& to = result.vertices[neighbours[v].second];
-    dissolve[v] = (to - from).cross(result.vertices[v] - from).norm() <= tolerance * (to - from).norm();
+    // Only a straight continuation (Blender's test: the turn's cosine within 1e-4 of 1); a
+    // crossing where the chain bends, as across the diagonal of a non-planar quad, is kept.
+    const Vec3d& p = result.vertices[v];
+    const Vec3d in = p - result.vertices[neighbours[v].first];
+    const Vec3d out = result.vertices[neighbours[v].second] - p;
+    const double cosine = in.dot(out) / std::max(in.norm() * out.norm(), 1e-300);
+    dissolve[v] = cosine > 1 - 1e-4;
   }
   std::vector<int> output_index(num_result, -1);
   sources_.clear();
