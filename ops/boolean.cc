@@ -555,7 +555,20 @@ void BooleanOp::Prepare(const Mesh& input) {
   }
   std::vector<Polygon> merged;
   for (int r = 0; r < num_result_triangles; ++r) {
-    if (find(r) == r) merged.push_back(polygons[r]);
+    if (find(r) != r) continue;
+    // A face the other operand left whole keeps its loop from its first corner, as in Blender
+    // (which matters to a later boolean's triangulation of a non-planar polygon).
+    Polygon& f = polygons[r];
+    const bool on_input = source_face[r] < input.NumFaces();
+    const Polygon& source = on_input ? input.faces[source_face[r]] : primitive.faces[source_face[r] - input.NumFaces()];
+    const Source::Kind kind = on_input ? Source::kInput : Source::kPrimitive;
+    if (f.size() == source.size()) {
+      const auto first = std::find_if(f.begin(), f.end(), [&](int v) {
+        return sources[v].kind == kind && sources[v].vertex == source[0];
+      });
+      if (first != f.end()) std::rotate(f.begin(), first, f.end());
+    }
+    merged.push_back(f);
   }
   const int num_result = static_cast<int>(result.vertices.size());
   std::vector<std::pair<int, int>> neighbours(num_result, {-1, -1});
