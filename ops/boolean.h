@@ -6,19 +6,20 @@
 //   prism6, prism8, cylinder: bmesh create_cone(cap_ends, radius 0.5, depth 1, 6 / 8 / 32
 //   segments): axis +Z, vertex 2k at angle 2 pi k / n from +Y towards +X on the bottom cap,
 //   2k + 1 above it; so for a prism `size` is [2 radius, 2 radius, depth].
-// The topology pass runs CGAL's exact corefinement once and records, for each output vertex,
-// where it comes from: an input vertex, a primitive vertex, or the crossing of an edge of one
-// mesh (of its triangulation, as Blender triangulates: quads along the 0-2 diagonal, n-gons by
-// ear clipping from vertex 0) with the plane of a triangle of the other; the geometry pass
-// recomputes all of them from the input positions and the 9 parameters.
+// The topology pass triangulates both operands as Blender's exact boolean does (quads along the
+// 0-2 diagonal unless concave there, larger polygons by Blender's polyfill ear clipping), runs
+// CGAL's exact corefinement once and records, for each output vertex, where it comes from: an
+// input vertex, a primitive vertex, or the crossing of an edge of one operand's triangulation
+// with the plane of a triangle of the other; the geometry pass recomputes all of them from the
+// input positions and the 9 parameters.
 // Output polygons follow Blender's exact boolean: the triangles left of each input or primitive
-// face are merged back into polygons, first across the edges CGAL added inside one triangle of
-// the triangulation, then across the triangulation's diagonals, longest edge first, never
-// merging two polygons that share a vertex besides the edge's ends (so a face with a hole is
-// split into hole-free polygons along the shortest remaining edges); then a new (crossing)
-// vertex that has the same two neighbours in every polygon around it is dissolved.
-// Where this and Blender's own triangulation tie-breaking differ, the polygon split of a face
-// with a hole can differ (same surface, other counts); see docs/sequence-format.md.
+// face (made constrained Delaunay within each operand triangle, as Blender's are) are merged
+// back into polygons across their shared edges, longest first, never merging two polygons that
+// share a vertex besides the edge's ends (so a face with a hole is split into hole-free polygons
+// along the shortest remaining edges); a face left whole keeps its loop; then a crossing with
+// the same two neighbours in every polygon around it, in a straight line, is dissolved.
+// Counts can differ from Blender's on exact ties and on booleans of non-planar polygons an
+// earlier boolean cut (same surface); see docs/sequence-format.md.
 //
 // JSON: {"operation": "UNION"|"DIFFERENCE", "primitive": "cube"|"prism6"|"prism8"|"cylinder",
 //        "size": [sx, sy, sz] (> 0, full extents), "rotation_deg": [3] (default 0),
