@@ -54,11 +54,11 @@ class BooleanOp : public OpBase<BooleanOp> {
   // (on_primitive false) or of the primitive, and `plane` a triangle of the other mesh.
   struct Source {
     enum Kind : char { kInput, kPrimitive, kCrossing };
-    Kind kind;
-    int vertex;  // kInput, kPrimitive
-    bool edge_on_primitive;
-    std::array<int, 2> edge;
-    std::array<int, 3> plane;
+    Kind kind = kInput;
+    int vertex = -1;  // kInput, kPrimitive
+    bool edge_on_primitive = false;
+    std::array<int, 2> edge = {-1, -1};
+    std::array<int, 3> plane = {-1, -1, -1};
   };
 
   // Primitive vertex v under the parameters p (rotation: the matrix of p[3..5]).
