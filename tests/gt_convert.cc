@@ -76,6 +76,11 @@ Json ConvertGtSequence(const std::filesystem::path& path, std::string* why_not) 
         *why_not = "Boolean other than the EXACT solver without self intersection and hole tolerance";
         return nullptr;
       }
+      const int segments = type == "prism6" ? 6 : type == "prism8" ? 8 : 32;
+      if (type != "cube" && prim.value("segments", segments) != segments) {
+        *why_not = "Boolean " + type + " with " + std::to_string(prim["segments"].get<int>()) + " segments";
+        return nullptr;
+      }
       Json size = prim.value("size", Json());
       if (type != "cube") {
         const double diameter = 2 * prim.at("radius").get<double>();
