@@ -3,6 +3,7 @@
 #include <map>
 #include <stdexcept>
 
+#include "ops/bevel.h"
 #include "ops/global_affine.h"
 #include "ops/inset.h"
 #include "ops/knife_cut.h"
@@ -49,6 +50,7 @@ const std::map<std::string, Factory>& Factories() {
       {"Extrude", [](const Json& p) { return std::make_unique<ExtrudeOp>(p); }},
       {"Inset", [](const Json& p) { return std::make_unique<InsetOp>(p); }},
       {"KnifeCut", [](const Json& p) { return std::make_unique<KnifeCutOp>(p); }},
+      {"Bevel", [](const Json& p) { return std::make_unique<BevelOp>(p); }},
   };
   return factories;
 }
