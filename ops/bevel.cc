@@ -37,10 +37,10 @@ BevelOp::BevelOp(const Json& params) {
 int BevelOp::Slot(const BevVert& bv, int i, int j, int k) const {
   const int n = static_cast<int>(bv.bounds.size()), ns = segments_;
   bevel::GridIndex g{i, j, k};
-  if (bv.kind == Kind::kWeld || bv.kind == Kind::kPolygon) {
+  if (bv.kind != Kind::kCubeCorner && bv.kind != Kind::kAdjacent) {
     if (k == ns) {
       g = {(i + 1) % n, 0, 0};
-    } else if (bv.kind == Kind::kWeld && i == bv.weld2 && k > 0) {
+    } else if ((bv.kind == Kind::kWeld || bv.kind == Kind::kTerminalEdge) && i == bv.weld2 && k > 0) {
       g = {bv.weld1, 0, ns - k};
     }
   } else {
@@ -128,7 +128,7 @@ void BevelOp::Prepare(const Mesh& input) {
     const int n = static_cast<int>(bv.edges.size());
     for (int h = 0; h < n; ++h) bv.edges[(h + 1) % n].fprev = bv.edges[h].fnext;
     for (const EdgeHalf& e : bv.edges) bv.selcount += e.beveled;
-    if (bv.selcount == 1) throw FieldError("segments", Unsupported(1, v, "a beveled edge ends here"));
+    if (bv.selcount == 1 && n < 3) throw FieldError("segments", Unsupported(1, v, "a beveled edge ends at a vertex of valence 2"));
 
     // Boundary vertices (build_boundary), with the placement rule decided on the input.
     const Vec3d& p = input.vertices[v];
@@ -148,6 +148,32 @@ void BevelOp::Prepare(const Mesh& input) {
     int efirst = 0;
     while (!bv.edges[efirst].beveled) ++efirst;
     int e = efirst;
+    if (bv.selcount == 1) {
+      // build_boundary_terminal_edge: meet points on the neighbouring edges, then points slid
+      // the width along every other edge.
+      const int prev = (efirst + n - 1) % n, next = (efirst + 1) % n;
+      BoundVert b0, b1;
+      b0.efirst = prev;
+      b0.elast = b0.ebev = efirst;
+      b1.efirst = efirst;
+      b1.elast = next;
+      bv.bounds = {b0, b1};
+      bv.edges[efirst].leftv = bv.edges[prev].leftv = bv.edges[prev].rightv = 0;
+      bv.edges[efirst].rightv = bv.edges[next].leftv = bv.edges[next].rightv = 1;
+      for (int h = (next + 1) % n; h != prev; h = (h + 1) % n) {
+        BoundVert slide;
+        slide.efirst = slide.elast = h;
+        slide.meet = Meet::kSlide;
+        bv.edges[h].leftv = bv.edges[h].rightv = static_cast<int>(bv.bounds.size());
+        bv.bounds.push_back(slide);
+      }
+      bv.kind = n == 3 ? Kind::kTerminalEdge : n == 4 ? Kind::kTriangleFan : Kind::kTerminalPolygon;
+      bv.weld1 = 0;
+      bv.weld2 = 1;
+      vertex_to_bev_[v] = static_cast<int>(bev_verts_.size());
+      bev_verts_.push_back(std::move(bv));
+      continue;
+    }
     do {
       int e2 = (e + 1) % n, in_plane = 0, not_in_plane = 0, eip = -1, enip = -1;
       for (; !bv.edges[e2].beveled; e2 = (e2 + 1) % n) {
@@ -390,7 +416,7 @@ void BevelOp::Prepare(const Mesh& input) {
         for (int k = 0; k <= ns; ++k) {
           const bool used = bv.kind == Kind::kCubeCorner || bv.kind == Kind::kAdjacent
                                 ? bevel::IsCanon(ns, i, j, k)
-                                : j == 0 && (k == 0 || (bv.kind == Kind::kWeld && i == bv.weld1 && k < ns));
+                                : j == 0 && (k == 0 || (bv.kind != Kind::kPolygon && i == 0 && k < ns));
           if (used) bv.ids[(i * (ns2 + 1) + j) * (ns + 1) + k] = next_id++;
         }
       }
@@ -416,9 +442,21 @@ void BevelOp::Prepare(const Mesh& input) {
       const int n = static_cast<int>(bv.edges.size());
       int h = 0;
       while (bv.edges[h].other != face[(c + 1) % k]) ++h;
-      const int bnd = bv.edges[h].rightv;
-      if (bv.edges[(h + 1) % n].leftv != bnd) throw FieldError("segments", Unsupported(bv.selcount, v, "a face spans two boundary vertices"));
-      rebuilt.push_back(OutputId(bv, bnd, 0, 0));
+      // The corner becomes the boundary vertices from the incoming edge's side back to the
+      // outgoing edge's, with the profile points between them (bev_rebuild_polygon).
+      const int count = static_cast<int>(bv.bounds.size());
+      const int first = bv.edges[(h + 1) % n].leftv, last = bv.edges[h].rightv;
+      rebuilt.push_back(OutputId(bv, first, 0, 0));
+      for (int j = first; j != last;) {
+        const int prev = (j + count - 1) % count;
+        for (int s = ns - 1; s >= 1; --s) {
+          if (bv.ids[Slot(bv, prev, 0, s)] >= 0 && bv.kind != Kind::kCubeCorner && bv.kind != Kind::kAdjacent) {
+            rebuilt.push_back(OutputId(bv, prev, 0, s));
+          }
+        }
+        j = prev;
+        rebuilt.push_back(OutputId(bv, j, 0, 0));
+      }
     }
     output_faces_.push_back(rebuilt);
   }
@@ -441,10 +479,19 @@ void BevelOp::Prepare(const Mesh& input) {
   }
   for (const BevVert& bv : bev_verts_) {
     const int n = static_cast<int>(bv.bounds.size());
-    if (bv.kind == Kind::kPolygon) {
+    if (bv.kind == Kind::kPolygon || bv.kind == Kind::kTriangleFan || bv.kind == Kind::kTerminalPolygon) {
       Polygon poly;
-      for (int i = 0; i < n; ++i) poly.push_back(OutputId(bv, i, 0, 0));
-      output_faces_.push_back(poly);
+      for (int i = 0; i < n; ++i) {
+        poly.push_back(OutputId(bv, i, 0, 0));
+        for (int k = 1; i == 0 && bv.kind != Kind::kPolygon && k < ns; ++k) poly.push_back(OutputId(bv, 0, 0, k));
+      }
+      if (bv.kind == Kind::kTriangleFan) {
+        // bevel_build_trifan: a fan from the polygon's last vertex.
+        const int m = static_cast<int>(poly.size());
+        for (int i = 0; i + 2 < m; ++i) output_faces_.push_back({poly[m - 1], poly[i], poly[i + 1]});
+      } else {
+        output_faces_.push_back(poly);
+      }
     } else if (bv.kind == Kind::kCubeCorner || bv.kind == Kind::kAdjacent) {
       const int odd = ns % 2;
       for (int i = 0; i < n; ++i) {
@@ -667,6 +714,8 @@ void BevelOp::Boundaries(const Positions<T>& in, const T& width, std::vector<std
         return geo.OffsetMeet(bv, e, e2, -1, true, bnd.e_in_plane, off_r[b][e], off_l[b][e2], vno);
       case Meet::kBetweenFace:
         return geo.OffsetMeet(bv, e, e2, bv.edges[e].fnext, true, bnd.e_in_plane, off_r[b][e], off_l[b][e2], vno);
+      case Meet::kSlide:
+        return geo.SlideDist(bv, e, width);
       case Meet::kOnEdgeBetween:
       default: {
         V3<T> meet1, meet2;
@@ -778,6 +827,11 @@ void BevelOp::Apply(const T* p, const T& gate, const Positions<T>& in, Positions
       bool linear = false;
       pro.start = start;
       pro.end = end;
+      if (h < 0) {  // no beveled edge starts here: a straight segment
+        pro.line = true;
+        pro.middle = (start + end) * T(0.5);
+        continue;
+      }
       pro.proj_dir = SafeNormalized<T>(v - in[bv.edges[h].other]);
       V3<T> other_point;
       if (bevel::IsectLineLine(v, in[bv.edges[h].other], start, end, &pro.middle, &other_point) == 0) pro.middle = v;
@@ -812,6 +866,19 @@ void BevelOp::Apply(const T* p, const T& gate, const Positions<T>& in, Positions
         pro.plane_co = pro.plane_no = pro.proj_dir = bevel::Zero3<T>();
       } else {
         pro.line = false;
+      }
+    }
+    if (bv.selcount == 1 && !profiles[0].line) {
+      // move_profile_plane: the terminal profile onto the plane through v and its two ends.
+      bevel::Profile<T>& pro = profiles[0];
+      const V3<T> d1 = SafeNormalized<T>(v - pro.start), d2 = SafeNormalized<T>(v - pro.end);
+      V3<T> no = d1.cross(d2), no2 = d1.cross(pro.proj_dir), no3 = d2.cross(pro.proj_dir);
+      const double eps = bevel::kEpsilonBig;
+      if (Scalar(Norm(no)) > eps && Scalar(Norm(no2)) > eps && Scalar(Norm(no3)) > eps) {
+        no = SafeNormalized(no);
+        no2 = SafeNormalized(no2);
+        no3 = SafeNormalized(no3);
+        if (std::abs(Scalar(no.dot(no2))) < 1 - eps && std::abs(Scalar(no.dot(no3))) < 1 - eps) pro.plane_no = no;
       }
     }
     if (bv.kind == Kind::kWeld) {
@@ -850,6 +917,8 @@ void BevelOp::Apply(const T* p, const T& gate, const Positions<T>& in, Positions
           grid.at(bv.weld1, 0, k) = (va + vb) * T(0.5);
         }
       }
+    } else if (bv.selcount == 1) {
+      for (int k = 1; k < ns; ++k) grid.at(0, 0, k) = profiles[0].Point(spacing_, k, ns);
     } else if (bv.kind == Kind::kCubeCorner) {
       // make_unit_cube_map: (1,0,0), (0,1,0), (0,0,1), (1,1,1) -> bound verts 0, 1, 2 and v.
       const V3<T>& va = bounds[b][0];

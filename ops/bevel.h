@@ -8,12 +8,14 @@
 // (two beveled edges: welded profiles; three or more: the cube-corner octant map when Blender
 // uses it, else its cubic-subdivision vertex mesh; one segment: a polygon).
 //
-// Exact cases: vertices with 2 or more beveled edges, any number of un-beveled edges between
-// them. Not supported (the topology pass raises "Bevel: vertex with N beveled edges not
-// supported: ..."): a vertex with exactly one beveled edge, "pipe" vertices (two collinear
-// beveled edges plus a third), non-manifold or open-boundary vertices, and widths for which
-// Blender's clamp_overlap would shrink the bevel (checked conservatively; raises FieldError
-// on 'width').
+// Exact cases: vertices with 1 beveled edge (Blender's terminal-edge rule: the profile ends on
+// the opposite face, a triangle fan or a polygon), with 2 (welded profiles, including un-beveled
+// edges between them and the loop-slide width adjustment) and with 3 or more, for 1 to 9
+// segments. Not supported (the topology pass raises "Bevel: vertex with N beveled edges not
+// supported: ..."): a beveled edge ending at a vertex of valence 2, "pipe" vertices (two
+// collinear beveled edges plus a third, all faces parallel to the pipe), non-manifold or
+// open-boundary vertices; and widths for which Blender's clamp_overlap would shrink the bevel
+// (geometry_collide_offset's limit; FieldError on 'width').
 //
 // JSON: {"width": w (>= 1e-4), "segments": 1..9 (default 1), "limit_method": "NONE"|"ANGLE"
 //        (default "NONE"), "angle_limit_deg": a (0..180, default 30)}
@@ -42,8 +44,10 @@ class BevelOp : public OpBase<BevelOp> {
   void Apply(const T* p, const T& gate, const Positions<T>& in, Positions<T>* out) const;
 
   // How a boundary vertex between beveled edges e and e2 is placed (decided on the input).
-  enum class Meet : char { kAdjacent, kOnEdgeBetween, kBetweenNoFace, kBetweenFace };
-  enum class Kind : char { kWeld, kPolygon, kCubeCorner, kAdjacent };
+  enum class Meet : char { kAdjacent, kOnEdgeBetween, kBetweenNoFace, kBetweenFace, kSlide };
+  // kTerminal*: one beveled edge ends here (build_boundary_terminal_edge): its profile ends on
+  // the opposite face (3 edges), a triangle fan (4 edges) or a polygon (more).
+  enum class Kind : char { kWeld, kPolygon, kCubeCorner, kAdjacent, kTerminalEdge, kTriangleFan, kTerminalPolygon };
 
   struct EdgeHalf {
     int other = -1;      // vertex at the other end
