@@ -4,7 +4,6 @@
 #include <algorithm>
 #include <deque>
 #include <limits>
-#include <map>
 #include <unordered_map>
 
 #include "core/geometry.h"
@@ -101,6 +100,11 @@ void BevelOp::Prepare(const Mesh& input) {
     if (!touched[v]) continue;
     BevVert bv;
     bv.vertex = v;
+    int beveled_here = 0;  // for messages before the fan is known
+    for (const auto& [f0, c0] : corners[v]) {
+      const Polygon& face = input.faces[f0];
+      beveled_here += is_beveled(v, face[(c0 + 1) % face.size()]);
+    }
     int f = corners[v][0].first, c = corners[v][0].second;
     for (size_t step = 0; step < corners[v].size(); ++step) {
       const Polygon& face = input.faces[f];
@@ -112,23 +116,23 @@ void BevelOp::Prepare(const Mesh& input) {
       half.beveled = is_beveled(v, b);
       bv.edges.push_back(half);
       const auto& users = edge_faces[EdgeKey(v, a)];
-      if (users.size() != 2) throw FieldError("segments", Unsupported(0, v, "on an open or non-manifold edge"));
+      if (users.size() != 2) throw FieldError("limit_method", Unsupported(beveled_here, v, "on an open or non-manifold edge"));
       const auto& other = users[0].first == f ? users[1] : users[0];
-      if (other.first == f) throw FieldError("segments", Unsupported(0, v, "an edge used twice by one face"));
+      if (other.first == f) throw FieldError("limit_method", Unsupported(beveled_here, v, "an edge used twice by one face"));
       const Polygon& g = input.faces[other.first];
       const int kg = static_cast<int>(g.size());
       const int cg = g[other.second] == v ? other.second : (other.second + 1) % kg;
-      if (g[(cg + 1) % kg] != a) throw FieldError("segments", Unsupported(0, v, "inconsistent face winding"));
+      if (g[(cg + 1) % kg] != a) throw FieldError("limit_method", Unsupported(beveled_here, v, "inconsistent face winding"));
       f = other.first;
       c = cg;
       if (f == corners[v][0].first && c == corners[v][0].second && step + 1 != corners[v].size()) {
-        throw FieldError("segments", Unsupported(0, v, "more than one fan of faces"));
+        throw FieldError("limit_method", Unsupported(beveled_here, v, "more than one fan of faces"));
       }
     }
     const int n = static_cast<int>(bv.edges.size());
     for (int h = 0; h < n; ++h) bv.edges[(h + 1) % n].fprev = bv.edges[h].fnext;
     for (const EdgeHalf& e : bv.edges) bv.selcount += e.beveled;
-    if (bv.selcount == 1 && n < 3) throw FieldError("segments", Unsupported(1, v, "a beveled edge ends at a vertex of valence 2"));
+    if (bv.selcount == 1 && n < 3) throw FieldError("limit_method", Unsupported(1, v, "a beveled edge ends at a vertex of valence 2"));
 
     // Boundary vertices (build_boundary), with the placement rule decided on the input.
     const Vec3d& p = input.vertices[v];
@@ -228,7 +232,7 @@ void BevelOp::Prepare(const Mesh& input) {
           if (bevel::AngleNormalized<double>(d1, d3) < bevel::kEpsilonAng) {
             bool parallel = true;
             for (const EdgeHalf& eh : bv.edges) parallel = parallel && std::abs(d1.dot(normals[eh.fnext])) <= bevel::kEpsilonBig;
-            if (parallel) throw FieldError("segments", Unsupported(bv.selcount, v, "a pipe (two collinear beveled edges)"));
+            if (parallel) throw FieldError("limit_method", Unsupported(bv.selcount, v, "a pipe (two collinear beveled edges)"));
             break;
           }
         }

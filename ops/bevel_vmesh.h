@@ -202,7 +202,7 @@ template <typename T>
 using ProfilePointFn = std::function<V3<T>(int i, int k, int nseg)>;
 
 template <typename T>
-void AddAvg4(V3<T>* out, const V3<T>& a, const V3<T>& b, const V3<T>& c, const V3<T>& d) {
+void Avg4(V3<T>* out, const V3<T>& a, const V3<T>& b, const V3<T>& c, const V3<T>& d) {
   *out = (a + b + c + d) * T(0.25);
 }
 
@@ -240,7 +240,7 @@ VGrid<T> CubicSubdiv(VGrid<T>& in, const ProfilePointFn<T>& profile_point) {
   for (int i = 0; i < n; ++i) {
     for (int j = 0; j < ns_in2; ++j) {
       for (int k = 0; k < ns_in2; ++k) {
-        AddAvg4(&out.at(i, 2 * j + 1, 2 * k + 1), in.at(i, j, k), in.at(i, j, k + 1), in.at(i, j + 1, k),
+        Avg4(&out.at(i, 2 * j + 1, 2 * k + 1), in.at(i, j, k), in.at(i, j, k + 1), in.at(i, j + 1, k),
                 in.at(i, j + 1, k + 1));
       }
     }
@@ -248,7 +248,7 @@ VGrid<T> CubicSubdiv(VGrid<T>& in, const ProfilePointFn<T>& profile_point) {
   for (int i = 0; i < n; ++i) {
     for (int j = 0; j < ns_in2; ++j) {
       for (int k = 1; k <= ns_in2; ++k) {
-        AddAvg4(&out.at(i, 2 * j + 1, 2 * k), in.at(i, j, k), in.at(i, j + 1, k), out.canon(i, 2 * j + 1, 2 * k - 1),
+        Avg4(&out.at(i, 2 * j + 1, 2 * k), in.at(i, j, k), in.at(i, j + 1, k), out.canon(i, 2 * j + 1, 2 * k - 1),
                 out.canon(i, 2 * j + 1, 2 * k + 1));
       }
     }
@@ -256,7 +256,7 @@ VGrid<T> CubicSubdiv(VGrid<T>& in, const ProfilePointFn<T>& profile_point) {
   for (int i = 0; i < n; ++i) {
     for (int j = 1; j < ns_in2; ++j) {
       for (int k = 0; k < ns_in2; ++k) {
-        AddAvg4(&out.at(i, 2 * j, 2 * k + 1), in.at(i, j, k), in.at(i, j, k + 1), out.canon(i, 2 * j - 1, 2 * k + 1),
+        Avg4(&out.at(i, 2 * j, 2 * k + 1), in.at(i, j, k), in.at(i, j, k + 1), out.canon(i, 2 * j - 1, 2 * k + 1),
                 out.canon(i, 2 * j + 1, 2 * k + 1));
       }
     }
@@ -266,9 +266,9 @@ VGrid<T> CubicSubdiv(VGrid<T>& in, const ProfilePointFn<T>& profile_point) {
     for (int j = 1; j < ns_in2; ++j) {
       for (int k = 1; k <= ns_in2; ++k) {
         V3<T> co1, co2;
-        AddAvg4(&co1, out.canon(i, 2 * j, 2 * k - 1), out.canon(i, 2 * j, 2 * k + 1), out.canon(i, 2 * j - 1, 2 * k),
+        Avg4(&co1, out.canon(i, 2 * j, 2 * k - 1), out.canon(i, 2 * j, 2 * k + 1), out.canon(i, 2 * j - 1, 2 * k),
                 out.canon(i, 2 * j + 1, 2 * k));
-        AddAvg4(&co2, out.canon(i, 2 * j - 1, 2 * k - 1), out.canon(i, 2 * j + 1, 2 * k - 1),
+        Avg4(&co2, out.canon(i, 2 * j - 1, 2 * k - 1), out.canon(i, 2 * j + 1, 2 * k - 1),
                 out.canon(i, 2 * j - 1, 2 * k + 1), out.canon(i, 2 * j + 1, 2 * k + 1));
         out.at(i, 2 * j, 2 * k) = co1 + co2 * beta + in.at(i, j, k) * gamma;
       }
