@@ -36,7 +36,7 @@ BevelOp::BevelOp(const Json& params) {
 int BevelOp::Slot(const BevVert& bv, int i, int j, int k) const {
   const int n = static_cast<int>(bv.bounds.size()), ns = segments_;
   bevel::GridIndex g{i, j, k};
-  if (bv.kind != Kind::kCubeCorner && bv.kind != Kind::kAdjacent) {
+  if (bv.kind != Kind::kCubeCorner && bv.kind != Kind::kAdjacent && bv.kind != Kind::kPipe) {
     if (k == ns) {
       g = {(i + 1) % n, 0, 0};
     } else if ((bv.kind == Kind::kWeld || bv.kind == Kind::kTerminalEdge) && i == bv.weld2 && k > 0) {
@@ -232,7 +232,7 @@ void BevelOp::Prepare(const Mesh& input) {
           if (bevel::AngleNormalized<double>(d1, d3) < bevel::kEpsilonAng) {
             bool parallel = true;
             for (const EdgeHalf& eh : bv.edges) parallel = parallel && std::abs(d1.dot(normals[eh.fnext])) <= bevel::kEpsilonBig;
-            if (parallel) throw FieldError("limit_method", Unsupported(bv.selcount, v, "a pipe (two collinear beveled edges)"));
+            if (parallel) bv.pipe = i;
             break;
           }
         }
@@ -261,6 +261,12 @@ void BevelOp::Prepare(const Mesh& input) {
         if (test == 0 && n == 3 && bv.selcount == 3) test = 1;
       }
       bv.kind = test != -1 && count == 3 ? Kind::kCubeCorner : Kind::kAdjacent;
+      if (bv.pipe >= 0) {
+        if (bv.kind == Kind::kCubeCorner) {
+          throw FieldError("limit_method", Unsupported(bv.selcount, v, "a pipe on a cube-like corner"));
+        }
+        bv.kind = Kind::kPipe;
+      }
     }
     vertex_to_bev_[v] = static_cast<int>(bev_verts_.size());
     bev_verts_.push_back(std::move(bv));
@@ -418,7 +424,7 @@ void BevelOp::Prepare(const Mesh& input) {
     for (int i = 0; i < n; ++i) {
       for (int j = 0; j <= ns2; ++j) {
         for (int k = 0; k <= ns; ++k) {
-          const bool used = bv.kind == Kind::kCubeCorner || bv.kind == Kind::kAdjacent
+          const bool used = bv.kind == Kind::kCubeCorner || bv.kind == Kind::kAdjacent || bv.kind == Kind::kPipe
                                 ? bevel::IsCanon(ns, i, j, k)
                                 : j == 0 && (k == 0 || (bv.kind != Kind::kPolygon && i == 0 && k < ns));
           if (used) bv.ids[(i * (ns2 + 1) + j) * (ns + 1) + k] = next_id++;
@@ -454,7 +460,7 @@ void BevelOp::Prepare(const Mesh& input) {
       for (int j = first; j != last;) {
         const int prev = (j + count - 1) % count;
         for (int s = ns - 1; s >= 1; --s) {
-          if (bv.ids[Slot(bv, prev, 0, s)] >= 0 && bv.kind != Kind::kCubeCorner && bv.kind != Kind::kAdjacent) {
+          if (bv.ids[Slot(bv, prev, 0, s)] >= 0 && bv.kind != Kind::kCubeCorner && bv.kind != Kind::kAdjacent && bv.kind != Kind::kPipe) {
             rebuilt.push_back(OutputId(bv, prev, 0, s));
           }
         }
@@ -496,7 +502,7 @@ void BevelOp::Prepare(const Mesh& input) {
       } else {
         output_faces_.push_back(poly);
       }
-    } else if (bv.kind == Kind::kCubeCorner || bv.kind == Kind::kAdjacent) {
+    } else if (bv.kind == Kind::kCubeCorner || bv.kind == Kind::kAdjacent || bv.kind == Kind::kPipe) {
       const int odd = ns % 2;
       for (int i = 0; i < n; ++i) {
         for (int j = 0; j < ns2; ++j) {
@@ -935,7 +941,7 @@ void BevelOp::Apply(const T* p, const T& gate, const Positions<T>& in, Positions
         grid.co[s] = c0 * T(q[0]) + c1 * T(q[1]) + c2 * T(q[2]) + c3;
       }
       for (int i = 0; i < n; ++i) grid.at(i, 0, 0) = bounds[b][i];
-    } else if (bv.kind == Kind::kAdjacent) {
+    } else if (bv.kind == Kind::kAdjacent || bv.kind == Kind::kPipe) {
       // adj_vmesh: a 2-segment control mesh with its centre pulled toward v by the profile's
       // fullness, refined by cubic subdivision and resampled to the segment count.
       bevel::VGrid<T> vm0(n, 2);
@@ -953,6 +959,45 @@ void BevelOp::Apply(const T* p, const T& gate, const Positions<T>& in, Positions
         return profiles[i].Point(spacing_, k, nseg);
       };
       grid = bevel::SubdivideToSegments(vm0, ns, profile_point, true);
+      if (bv.kind == Kind::kPipe) {
+        // pipe_adj_vmesh: snap the interior onto the pipe's profile, in the plane through each
+        // point perpendicular to the pipe (snap_to_pipe_profile, r = 2).
+        const bevel::Profile<T>& pro = profiles[bv.pipe];
+        const V3<T> edir = SafeNormalized<T>(v - in[bv.edges[bv.bounds[bv.pipe].ebev].other]);
+        for (int i = 0; i < n; ++i) {
+          for (int j = 1; j <= ns / 2; ++j) {
+            for (int k = 0; k <= ns / 2; ++k) {
+              if (!bevel::IsCanon(ns, i, j, k)) continue;
+              V3<T>& co = grid.at(i, j, k);
+              if (Scalar((pro.start - pro.end).cwiseAbs().maxCoeff()) <= bevel::kEpsilon) {
+                co = pro.start;
+                continue;
+              }
+              auto to_plane = [&](const V3<T>& q) { return V3<T>(q - edir * edir.dot(q - co)); };
+              bevel::Profile<T> flat;
+              flat.start = to_plane(pro.start);
+              flat.middle = to_plane(pro.middle);
+              flat.end = to_plane(pro.end);
+              V3<T> c0, c1, c3;
+              if (flat.UnitSquareMap(&c0, &c1, &c3)) {
+                Eigen::Matrix<T, 3, 3> m;
+                m.col(0) = c0;
+                m.col(1) = c1;
+                m.col(2) = SafeNormalized<T>(c1.cross(c0));
+                const V3<T> q = SafeNormalized<T>(V3<T>(m.inverse() * (co - c3)));
+                co = m * q + c3;
+              } else {
+                const V3<T> ab = flat.end - flat.start;
+                T t = ab.dot(co - flat.start) / ab.dot(ab);
+                if (Scalar(t) < 0) t = T(0);
+                if (Scalar(t) > 1) t = T(1);
+                co = flat.start + ab * t;
+              }
+            }
+          }
+        }
+        grid.CopyEquiv();
+      }
       for (int i = 0; i < n; ++i) grid.at(i, 0, 0) = bounds[b][i];
     }
     for (size_t s = 0; s < bv.ids.size(); ++s) {

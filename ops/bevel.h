@@ -11,10 +11,11 @@
 // Exact cases: vertices with 1 beveled edge (Blender's terminal-edge rule: the profile ends on
 // the opposite face, a triangle fan or a polygon), with 2 (welded profiles, including un-beveled
 // edges between them and the loop-slide width adjustment) and with 3 or more, for 1 to 9
-// segments. Not supported (the topology pass raises "Bevel: vertex with N beveled edges not
-// supported: ..."): a beveled edge ending at a vertex of valence 2, "pipe" vertices (two
-// collinear beveled edges plus a third, all faces parallel to the pipe), non-manifold or
-// open-boundary vertices; and widths for which Blender's clamp_overlap would shrink the bevel
+// segments, including "pipe" vertices (two collinear beveled edges plus others, all faces
+// parallel to the pipe, e.g. loop cuts with limit NONE: interior snapped to the pipe profile).
+// Not supported (the topology pass raises "Bevel: vertex with N beveled edges not supported:
+// ..."): a beveled edge ending at a vertex of valence 2, a pipe through a 3-edge cube-like
+// corner, non-manifold or open-boundary vertices; and widths for which Blender's clamp_overlap would shrink the bevel
 // (geometry_collide_offset's limit; FieldError on 'width').
 //
 // JSON: {"width": w (>= 1e-4), "segments": 1..9 (default 1), "limit_method": "NONE"|"ANGLE"
@@ -47,7 +48,7 @@ class BevelOp : public OpBase<BevelOp> {
   enum class Meet : char { kAdjacent, kOnEdgeBetween, kBetweenNoFace, kBetweenFace, kSlide };
   // kTerminal*: one beveled edge ends here (build_boundary_terminal_edge): its profile ends on
   // the opposite face (3 edges), a triangle fan (4 edges) or a polygon (more).
-  enum class Kind : char { kWeld, kPolygon, kCubeCorner, kAdjacent, kTerminalEdge, kTriangleFan, kTerminalPolygon };
+  enum class Kind : char { kWeld, kPolygon, kCubeCorner, kAdjacent, kPipe, kTerminalEdge, kTriangleFan, kTerminalPolygon };
 
   struct EdgeHalf {
     int other = -1;      // vertex at the other end
@@ -70,6 +71,7 @@ class BevelOp : public OpBase<BevelOp> {
     std::vector<BoundVert> bounds; // CCW
     Kind kind = Kind::kPolygon;
     int weld1 = -1, weld2 = -1;
+    int pipe = -1;                 // kPipe: boundary vertex whose profile is the pipe's
     std::vector<int> ids;          // grid slot (i, j, k) -> output vertex, -1 unused
   };
 
