@@ -340,63 +340,15 @@ void BevelOp::Prepare(const Mesh& input) {
     }
   }
 
-  // clamp_overlap (bevel_limit_offset / geometry_collide_offset): the width at which a clone of
-  // an edge collapses, or a boundary vertex slides past the end of an un-beveled edge. Blender
-  // would shrink the bevel there; this op rejects such widths instead.
-  double limit = std::numeric_limits<double>::infinity();
-  for (const BevVert& bv : bev_verts_) {
-    const int n = static_cast<int>(bv.edges.size());
-    const Vec3d& vb = input.vertices[bv.vertex];
-    for (int h = 0; h < n; ++h) {
-      const EdgeHalf& eb = bv.edges[h];
-      const EdgeHalf& ea = bv.edges[(h + 1) % n];
-      const int c = eb.other;
-      const double kb = eb.beveled, ka = ea.beveled;
-      double kc = 0;
-      int d = -1;
-      if (vertex_to_bev_[c] >= 0) {
-        const BevVert& bvc = bev_verts_[vertex_to_bev_[c]];
-        const int nc = static_cast<int>(bvc.edges.size());
-        int hc = 0;
-        while (bvc.edges[hc].other != bv.vertex) ++hc;
-        const EdgeHalf& ec = bvc.edges[(hc + nc - 1) % nc];
-        kc = ec.beveled;
-        d = ec.other;
-      } else {
-        const Polygon& face = input.faces[eb.fnext];
-        const int k = static_cast<int>(face.size());
-        for (int i = 0; i < k; ++i) {
-          if (face[i] == c) d = face[(i + 1) % k] == bv.vertex ? face[(i + k - 1) % k] : face[(i + 1) % k];
-        }
-      }
-      if (d < 0 || ea.other == c || d == bv.vertex) continue;
-      const Vec3d& va = input.vertices[ea.other];
-      const Vec3d& vc = input.vertices[c];
-      const Vec3d& vd = input.vertices[d];
-      const double th1 = bevel::Angle<double>(va - vb, vc - vb), th2 = bevel::Angle<double>(vb - vc, vd - vc);
-      const double sin1 = std::sin(th1), sin2 = std::sin(th2);
-      if ((ka > 0) + (kb > 0) + (kc > 0) >= 2) {
-        const double tan1 = std::tan(th1), tan2 = std::tan(th2);
-        const double g = tan1 * tan2, hh = sin1 * sin2;
-        const double den = g * (ka * sin2 + kc * sin1) + kb * hh * (tan1 + tan2);
-        const double t = den != 0 ? (vc - vb).norm() * g * hh / den : -1;
-        if (t >= 0) limit = std::min(limit, t);
-      }
-      if (kb > 0 && ka == 0) limit = std::min(limit, (va - vb).norm() * sin1 / kb);
-      if (kb > 0 && kc == 0) limit = std::min(limit, (vd - vc).norm() * sin2 / kb);
-    }
-  }
-  if (width_ > limit * (1 + 1e-6)) {
-    throw FieldError("width", "exceeds the clamp_overlap limit " + std::to_string(limit) +
-                                  " of this mesh (Blender would shrink the bevel)");
-  }
+  // clamp_overlap: widths beyond the collision limit are shrunk to it, as Blender does.
+  const double clamped_width = std::min(width_, ClampLimit<double>(input.vertices));
 
   // Blender takes the cube-corner vertex mesh only when the (adjusted) widths of the corner's
   // beveled edges agree (tri_corner_test).
   if (!chains_.empty()) {
     std::vector<std::vector<double>> off_l;
     std::vector<std::vector<Vec3d>> bounds;
-    Boundaries<double>(input.vertices, width_, &off_l, &bounds);
+    Boundaries<double>(input.vertices, clamped_width, &off_l, &bounds);
     for (size_t b = 0; b < bev_verts_.size(); ++b) {
       BevVert& bv = bev_verts_[b];
       if (bv.kind != Kind::kCubeCorner) continue;
@@ -691,6 +643,67 @@ class BevelGeometry {
 
 }  // namespace
 
+// clamp_overlap (bevel_limit_offset / geometry_collide_offset): the smallest width at which the
+// clone of an edge collapses (the offset lines of it and its two neighbours in a face meet), or
+// a boundary vertex slides past the far end of an un-beveled edge.
+template <typename T>
+T BevelOp::ClampLimit(const Positions<T>& in) const {
+  using std::sin;
+  T limit(std::numeric_limits<double>::max());
+  for (const BevVert& bv : bev_verts_) {
+    const int n = static_cast<int>(bv.edges.size());
+    const V3<T>& vb = in[bv.vertex];
+    for (int h = 0; h < n; ++h) {
+      const EdgeHalf& eb = bv.edges[h];
+      const EdgeHalf& ea = bv.edges[(h + 1) % n];
+      const int c = eb.other;
+      const double kb = eb.beveled, ka = ea.beveled;
+      double kc = 0;
+      int d = -1;
+      if (vertex_to_bev_[c] >= 0) {
+        const BevVert& bvc = bev_verts_[vertex_to_bev_[c]];
+        const int nc = static_cast<int>(bvc.edges.size());
+        int hc = 0;
+        while (bvc.edges[hc].other != bv.vertex) ++hc;
+        const EdgeHalf& ec = bvc.edges[(hc + nc - 1) % nc];
+        kc = ec.beveled;
+        d = ec.other;
+      } else {
+        const Polygon& face = input_faces_[eb.fnext];
+        const int k = static_cast<int>(face.size());
+        for (int i = 0; i < k; ++i) {
+          if (face[i] == c) d = face[(i + 1) % k] == bv.vertex ? face[(i + k - 1) % k] : face[(i + 1) % k];
+        }
+      }
+      if (d < 0 || ea.other == c || d == bv.vertex) continue;
+      const V3<T>& va = in[ea.other];
+      const V3<T>& vc = in[c];
+      const V3<T>& vd = in[d];
+      const T th1 = bevel::Angle<T>(va - vb, vc - vb), th2 = bevel::Angle<T>(vb - vc, vd - vc);
+      const T sin1 = sin(th1), sin2 = sin(th2);
+      if ((ka > 0) + (kb > 0) + (kc > 0) >= 2) {
+        // Blender's len * g h / (g (ka sin2 + kc sin1) + kb h (tan1 + tan2)), g = tan1 tan2,
+        // h = sin1 sin2, divided through by g (stable at right angles, where tan is huge).
+        const double g = std::tan(Scalar(th1)) * std::tan(Scalar(th2));
+        const T den = ka * sin2 + kc * sin1 + kb * sin(th1 + th2);
+        if (g != 0 && Scalar(den) != 0) {
+          const T t = Norm<T>(vc - vb) * sin1 * sin2 / den;
+          if (Scalar(t) >= 0 && Scalar(t) < Scalar(limit)) limit = t;
+        }
+      }
+      if (kb > 0 && ka == 0) {
+        const T t = Norm<T>(va - vb) * sin1 / kb;
+        if (Scalar(t) >= 0 && Scalar(t) < Scalar(limit)) limit = t;
+      }
+      if (kb > 0 && kc == 0) {
+        const T t = Norm<T>(vd - vc) * sin2 / kb;
+        if (Scalar(t) >= 0 && Scalar(t) < Scalar(limit)) limit = t;
+      }
+    }
+  }
+  return limit;
+}
+
 // Boundary vertices of every beveled vertex (build_boundary), with the loop-slide width
 // adjustment (adjust_offsets); *off_l gets the final left offsets of every edge half.
 template <typename T>
@@ -815,7 +828,9 @@ void BevelOp::Apply(const T* p, const T& gate, const Positions<T>& in, Positions
   for (size_t v = 0; v < in.size(); ++v) {
     if (kept_vertex_id_[v] >= 0) (*out)[kept_vertex_id_[v]] = in[v];
   }
-  const T width = gate * p[0];
+  T width = gate * p[0];
+  const T limit = ClampLimit(in);
+  if (Scalar(limit) < Scalar(width)) width = limit;
   const int ns = segments_;
 
   std::vector<std::vector<T>> off_l;

@@ -15,12 +15,13 @@
 // parallel to the pipe, e.g. loop cuts with limit NONE: interior snapped to the pipe profile).
 // Not supported (the topology pass raises "Bevel: vertex with N beveled edges not supported:
 // ..."): a beveled edge ending at a vertex of valence 2, a pipe through a 3-edge cube-like
-// corner, non-manifold or open-boundary vertices; and widths for which Blender's clamp_overlap would shrink the bevel
-// (geometry_collide_offset's limit; FieldError on 'width').
+// corner, non-manifold or open-boundary vertices. clamp_overlap as Blender: the width is
+// limited to the smallest width at which an edge's clone collapses or a boundary vertex slides
+// off an un-beveled edge (geometry_collide_offset).
 //
 // JSON: {"width": w (>= 1e-4), "segments": 1..9 (default 1), "limit_method": "NONE"|"ANGLE"
 //        (default "NONE"), "angle_limit_deg": a (0..180, default 30)}
-// Continuous parameter: width. Gate g: effective width g * w; at g = 0 every new vertex sits
+// Continuous parameter: width. Gate g: effective width min(g * w, clamp limit); at g = 0 every new vertex sits
 // on its original vertex, so the bevel faces are degenerate and the surface is unchanged.
 // Blender: a BEVEL modifier left in the stack, with the settings above.
 #pragma once
@@ -76,6 +77,8 @@ class BevelOp : public OpBase<BevelOp> {
   };
 
  private:
+  template <typename T>
+  T ClampLimit(const Positions<T>& in) const;
   template <typename T>
   void Boundaries(const Positions<T>& in, const T& width, std::vector<std::vector<T>>* off_l,
                   std::vector<std::vector<Vec3<T>>>* bounds) const;

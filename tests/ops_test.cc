@@ -287,8 +287,6 @@ INSTANTIATE_TEST_SUITE_P(
                  "operation 0 (Bevel): field 'segments': value 10 out of range"},
         BadInput{"bevel_negative_width", R"({"operations": [{"op": "Bevel", "params": {"width": -0.1, "segments": 2}}]})",
                  "operation 0 (Bevel): field 'width'"},
-        BadInput{"bevel_clamped_width", R"({"operations": [{"op": "Bevel", "params": {"width": 1.2, "segments": 2}}]})",
-                 "operation 0 (Bevel): field 'width': exceeds the clamp_overlap limit"},
         BadInput{"bad_gate", R"({"operations": [{"op": "GlobalAffineTranslate", "params": {"offset": [0, 0, 0]}, "gate": 2}]})",
                  "operation 0 (GlobalAffineTranslate): field 'gate'"}),
     [](const ::testing::TestParamInfo<BadInput>& info) { return std::string(info.param.name); });
