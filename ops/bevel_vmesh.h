@@ -186,6 +186,10 @@ struct VGrid {
     const GridIndex c = Canon(n, ns, i, j, k);
     return at(c.i, c.j, c.k);
   }
+  const V3<T>& canon(int i, int j, int k) const {
+    const GridIndex c = Canon(n, ns, i, j, k);
+    return at(c.i, c.j, c.k);
+  }
   void CopyEquiv() {
     for (int i = 0; i < n; ++i) {
       for (int j = 0; j <= ns / 2; ++j) {
@@ -355,7 +359,7 @@ template <typename T>
 VGrid<T> InterpVmesh(const VGrid<T>& in, int nseg, const ProfilePointFn<T>& profile_point) {
   const int n = in.n, ns_in = in.ns, nseg2 = nseg / 2, odd = nseg % 2;
   VGrid<T> out(n, nseg);
-  VGrid<T>& src = const_cast<VGrid<T>&>(in);
+  const VGrid<T>& src = in;
   std::vector<T> prev_frac = VmeshFracs(in, n - 1);
   std::vector<T> prev_new_frac = ProfileFracs(profile_point, n - 1, nseg);
   for (int i = 0; i < n; ++i) {
