@@ -4,6 +4,7 @@
 #include <stdexcept>
 
 #include "ops/boolean.h"
+#include "ops/bevel.h"
 #include "ops/global_affine.h"
 #include "ops/inset.h"
 #include "ops/knife_cut.h"
@@ -51,6 +52,7 @@ const std::map<std::string, Factory>& Factories() {
       {"Inset", [](const Json& p) { return std::make_unique<InsetOp>(p); }},
       {"KnifeCut", [](const Json& p) { return std::make_unique<KnifeCutOp>(p); }},
       {"Boolean", [](const Json& p) { return std::make_unique<BooleanOp>(p); }},
+      {"Bevel", [](const Json& p) { return std::make_unique<BevelOp>(p); }},
   };
   return factories;
 }

@@ -91,6 +91,15 @@ Json ConvertGtSequence(const std::filesystem::path& path, std::string* why_not) 
       params = {{"operation", p.at("operation")}, {"primitive", type}, {"size", size},
                 {"rotation_deg", prim.value("rotation_deg", Json::array({0.0, 0.0, 0.0}))},
                 {"location", prim.value("location", Json::array({0.0, 0.0, 0.0}))}};
+    } else if (name == "Bevel") {
+      if (p.value("affect", "EDGES") != "EDGES" || p.value("offset_type", "OFFSET") != "OFFSET" ||
+          p.value("profile", 0.5) != 0.5 || !p.value("clamp_overlap", true) ||
+          p.value("miter_outer", "MITER_SHARP") != "MITER_SHARP") {
+        *why_not = "Bevel other than edges, offset width, profile 0.5, clamp overlap, sharp outer miter";
+        return nullptr;
+      }
+      params = {{"width", p.at("width")}, {"segments", p.value("segments", 1)},
+                {"limit_method", p.value("limit_method", "NONE")}, {"angle_limit_deg", p.value("angle_limit_deg", 30.0)}};
     } else {
       *why_not = "no converter for " + name + " yet";
       return nullptr;

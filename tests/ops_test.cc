@@ -305,6 +305,12 @@ INSTANTIATE_TEST_SUITE_P(
         BadInput{"boolean_size",
                  R"({"operations": [{"op": "Boolean", "params": {"operation": "DIFFERENCE", "primitive": "cube", "size": [1, 0, 1]}}]})",
                  "operation 0 (Boolean): field 'size[1]': value 0 out of range"},
+        BadInput{"bevel_segments_0", R"({"operations": [{"op": "Bevel", "params": {"width": 0.1, "segments": 0}}]})",
+                 "operation 0 (Bevel): field 'segments': value 0 out of range"},
+        BadInput{"bevel_segments_10", R"({"operations": [{"op": "Bevel", "params": {"width": 0.1, "segments": 10}}]})",
+                 "operation 0 (Bevel): field 'segments': value 10 out of range"},
+        BadInput{"bevel_negative_width", R"({"operations": [{"op": "Bevel", "params": {"width": -0.1, "segments": 2}}]})",
+                 "operation 0 (Bevel): field 'width'"},
         BadInput{"bad_gate", R"({"operations": [{"op": "GlobalAffineTranslate", "params": {"offset": [0, 0, 0]}, "gate": 2}]})",
                  "operation 0 (GlobalAffineTranslate): field 'gate'"}),
     [](const ::testing::TestParamInfo<BadInput>& info) { return std::string(info.param.name); });
