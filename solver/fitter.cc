@@ -230,7 +230,7 @@ double Fitter::Solve(const Correspondences& correspondences, double sparsity_wei
     ceres::Problem problem(problem_options);
     for (const ProgramBlock& block : blocks) {
       problem.AddParameterBlock(block.data, block.size);
-      if (static_cast<int>(block.constant.size()) == block.size) {
+      if (static_cast<int>(block.constant.size()) == block.size || (block.is_gate ? hold_gates_ : hold_params_)) {
         problem.SetParameterBlockConstant(block.data);
       } else if (!block.constant.empty()) {
         problem.SetManifold(block.data, new ceres::SubsetManifold(block.size, block.constant));
@@ -270,7 +270,8 @@ double Fitter::Solve(const Correspondences& correspondences, double sparsity_wei
   std::vector<double> lower(n, -std::numeric_limits<double>::infinity()), upper(n, std::numeric_limits<double>::infinity());
   for (const ProgramBlock& block : blocks) {
     for (int i = 0; i < block.size; ++i) {
-      free[block.column + i] = std::count(block.constant.begin(), block.constant.end(), i) == 0;
+      free[block.column + i] = std::count(block.constant.begin(), block.constant.end(), i) == 0 &&
+                               !(block.is_gate ? hold_gates_ : hold_params_);
       address[block.column + i] = block.data + i;
       if (!block.is_gate) {
         lower[block.column + i] = sequence_->ops[block.op]->specs()[i].lower;
@@ -407,8 +408,15 @@ FitSummary Fitter::Fit() {
   summary.history.emplace_back(0.0, summary.initial_loss);
   int jacobians = 0;
   if (options_.fit_gates) {
+    // Stage 1: parameters with the gates held; stage 2: gates under the sparsity weight with
+    // the parameters held (a gate and its op's parameters trade off exactly, so fitting both
+    // under the penalty would shrink every gate and inflate the parameters to compensate).
+    hold_gates_ = true;
     RunStage(0.0, &summary);
+    hold_gates_ = false;
+    hold_params_ = true;
     RunStage(options_.gate_sparsity_weight, &summary);
+    hold_params_ = false;
     jacobians += program_->num_jacobian_evaluations() - jacobians_before;
     Finalise(&summary);
     jacobians += program_->num_jacobian_evaluations();

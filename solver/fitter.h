@@ -3,8 +3,8 @@
 // or Adam over exactly the same objective and gradients), re-estimated in an outer ICP loop
 // until the loss stops improving.
 //
-// With fit_gates the fit runs in stages: (1) parameters and gates without sparsity, (2) the
-// gate sparsity weight switched on, (3) finalisation: ops whose gate fell below prune_gate are
+// With fit_gates the fit runs in stages: (1) the parameters with the gates held, (2) the gates
+// under the gate sparsity weight with the parameters held, (3) finalisation: ops whose gate fell below prune_gate are
 // removed, the other free gates are folded into their op's parameters (p <- identity +
 // g (p - identity), which is each op's gate blend) and set to 1, and a last solve polishes
 // the parameters with gates fixed, so the result is exportable to Blender.
@@ -37,7 +37,7 @@ struct FitterOptions {
   RobustLoss loss = RobustLoss::kNone;
   double loss_scale = 0.02;  // robust loss scale, unit-box units
   bool fit_gates = false;
-  double gate_sparsity_weight = 1e-3;  // stage 2 weight of sum(g^2) / 2
+  double gate_sparsity_weight = 1e-4;  // stage 2 weight of sum(g^2) / 2 (data loss: unit box)
   double prune_gate = 0.5;
   int max_outer_iterations = 15;    // correspondence updates per stage
   int max_inner_iterations = 25;    // LM iterations per solve
@@ -95,6 +95,7 @@ class Fitter {
   FitterOptions options_;
   std::unique_ptr<Program> program_;
   double sparsity_weight_ = 0;
+  bool hold_params_ = false, hold_gates_ = false;  // blocks held constant in the current stage
   uint64_t update_count_ = 0;
   double start_time_ = 0;
 };

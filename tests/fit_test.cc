@@ -147,3 +147,59 @@ TEST(Fit, RecoversPerturbedParameters) {
 
 }  // namespace
 }  // namespace opgraph
+
+namespace opgraph {
+namespace {
+
+// A decoy op (not in the target's sequence) added with gate 1 is driven toward gate 0 by the
+// sparsity stage and pruned; the rest is still recovered.
+TEST(Fit, DecoyOpIsPruned) {
+  const char* truth_ops = R"([{"op": "GlobalAffineScale", "params": {"scale": [0.6, 0.8, 1.8]}},
+                              {"op": "LoopCut", "params": {"axis": "Z", "cuts": 6, "near": [0.6, 0.8, 0]}},
+                              {"op": "SimpleDeformTwist", "params": {"axis": "Z", "angle_deg": 70}}])";
+  const struct {
+    const char* name;
+    const char* op;
+    int index;  // insertion position
+  } decoys[] = {
+      {"taper", R"({"op": "SimpleDeformTaper", "params": {"axis": "X", "factor": 0.3}})", 3},
+      {"extrude", R"({"op": "Extrude", "params": {"faces": {"normal": [0, 0, 1], "expect": 1}, "height": 0.4, "width": 0.7}})", 2},
+  };
+  for (const auto& decoy : decoys) {
+    const Json truth_json = {{"operations", Json::parse(truth_ops)}};
+    Sequence truth = ParseSequence(truth_json);
+    const Mesh target_mesh = EvaluateSequence(&truth).back();
+    TargetOptions target_options;
+    target_options.num_samples = 5000;
+    const Target target(target_mesh, {}, target_options);
+
+    Json init_json = truth_json;
+    init_json["operations"].insert(init_json["operations"].begin() + decoy.index, Json::parse(decoy.op));
+    Sequence sequence = ParseSequence(init_json);
+    FitterOptions options = TestOptions();
+    options.fit_gates = true;
+    if (std::getenv("OPGRAPH_FIT_VERBOSE")) options.progress = &std::cout;
+    Fitter fitter(target, &sequence, options);
+    Perturb(fitter.program(), sequence, 77);
+    const FitSummary summary = fitter.Fit();
+    ASSERT_EQ(summary.gates_before_finalisation.size(), 4u);
+    std::printf("[decoy] %s: gates before finalisation", decoy.name);
+    for (double g : summary.gates_before_finalisation) std::printf(" %.3f", g);
+    std::printf("; pruned %zu op(s); final loss %.3e\n", summary.pruned_ops.size(), summary.final_loss);
+    EXPECT_LT(summary.gates_before_finalisation[decoy.index], 0.5) << decoy.name;
+    for (int k = 0; k < 4; ++k) {
+      if (k != decoy.index && k != 1) EXPECT_GT(summary.gates_before_finalisation[k], 0.5) << decoy.name << " op " << k;
+    }
+    EXPECT_EQ(summary.pruned_ops, std::vector<int>{decoy.index}) << decoy.name;
+    ASSERT_EQ(sequence.ops.size(), 3u);
+    for (double g : sequence.gates) EXPECT_EQ(g, 1.0);
+    const Mesh fitted = EvaluateSequence(&sequence).back();
+    MetricsOptions metrics_options;
+    metrics_options.num_samples = 5000;
+    const ShapeMetrics metrics = ComputeShapeMetrics(fitted, target_mesh, metrics_options);
+    EXPECT_LT(metrics.chamfer.Sum(), 2 * SamplingNoiseFloor(target_mesh, metrics_options)) << decoy.name;
+  }
+}
+
+}  // namespace
+}  // namespace opgraph
