@@ -1,20 +1,40 @@
 #include "ops/knife_cut.h"
 
 #include <limits>
+#include <map>
 
 namespace opgraph {
 
-KnifeCutOp::KnifeCutOp(const Json& params) : selector_(MemberOrNull(params, "face"), "face") {
+KnifeCutOp::KnifeCutOp(const Json& params) {
   ParamReader reader(params);
-  reader.Raw("face");
-  const Json& points = reader.Raw("edge_points");
-  if (!points.is_array() || points.size() != 2) throw FieldError("edge_points", "must be an array of 2 points");
-  for (int k = 0; k < 2; ++k) points_[k] = CheckedVector3(points[k], "edge_points[" + std::to_string(k) + "]", -1e9, 1e9);
+  if (reader.Has("plane_co") || reader.Has("plane_no")) {
+    plane_co_ = reader.Vector3("plane_co", -1e9, 1e9);
+    const Vec3d normal = reader.Vector3("plane_no", -1e9, 1e9);
+    if (!(normal.norm() > 1e-12)) throw FieldError("plane_no", "must not be zero");
+    plane_no_ = normal.normalized();
+  } else {
+    selector_.emplace(MemberOrNull(params, "face"), "face");
+    reader.Raw("face");
+    const Json& points = reader.Raw("edge_points");
+    if (!points.is_array() || points.size() != 2) throw FieldError("edge_points", "must be an array of 2 points");
+    for (int k = 0; k < 2; ++k) points_[k] = CheckedVector3(points[k], "edge_points[" + std::to_string(k) + "]", -1e9, 1e9);
+  }
   reader.Finish();
 }
 
 void KnifeCutOp::Prepare(const Mesh& input) {
-  const std::vector<int> faces = selector_.Resolve(input);
+  split_edges_.clear();
+  output_faces_.clear();
+  if (selector_) {
+    PrepareEdgeMode(input);
+  } else {
+    PreparePlaneMode(input);
+  }
+  num_output_vertices_ = input.NumVertices() + static_cast<int>(split_edges_.size());
+}
+
+void KnifeCutOp::PrepareEdgeMode(const Mesh& input) {
+  const std::vector<int> faces = selector_->Resolve(input);
   if (faces.size() != 1) throw FieldError("face", "selects " + std::to_string(faces.size()) + " faces, expected 1");
   const Polygon& face = input.faces[faces[0]];
   const int n = static_cast<int>(face.size());
@@ -28,8 +48,7 @@ void KnifeCutOp::Prepare(const Mesh& input) {
   }
   if (positions[0] == positions[1]) throw FieldError("edge_points", "both points name the same edge");
   const int mid[2] = {input.NumVertices(), input.NumVertices() + 1};
-  for (int k = 0; k < 2; ++k) cut_edges_[k] = {face[positions[k]], face[(positions[k] + 1) % n]};
-  output_faces_.clear();
+  for (int k = 0; k < 2; ++k) split_edges_.push_back({face[positions[k]], face[(positions[k] + 1) % n]});
   for (int f = 0; f < input.NumFaces(); ++f) {
     if (f == faces[0]) {
       // Walk from each midpoint to the other along the loop: two faces.
@@ -50,18 +69,75 @@ void KnifeCutOp::Prepare(const Mesh& input) {
       loop.push_back(p[i]);
       const int a = p[i], b = p[(i + 1) % p.size()];
       for (int k = 0; k < 2; ++k) {
-        if (EdgeKey(a, b) == EdgeKey(cut_edges_[k].first, cut_edges_[k].second)) loop.push_back(mid[k]);
+        if (EdgeKey(a, b) == EdgeKey(split_edges_[k].first, split_edges_[k].second)) loop.push_back(mid[k]);
       }
     }
     output_faces_.push_back(loop);
   }
-  num_output_vertices_ = input.NumVertices() + 2;
+}
+
+void KnifeCutOp::PreparePlaneMode(const Mesh& input) {
+  std::vector<int> side(input.NumVertices());
+  for (int v = 0; v < input.NumVertices(); ++v) {
+    const double d = (input.vertices[v] - plane_co_).dot(plane_no_);
+    side[v] = d > kPlaneEpsilon ? 1 : (d < -kPlaneEpsilon ? -1 : 0);
+  }
+  // New vertices on crossing edges, numbered in face-loop order of first appearance.
+  std::map<decltype(EdgeKey(0, 0)), int> new_vertex_of_edge;
+  for (const Polygon& face : input.faces) {
+    for (size_t i = 0; i < face.size(); ++i) {
+      const int a = face[i], b = face[(i + 1) % face.size()];
+      if (side[a] * side[b] >= 0 || new_vertex_of_edge.count(EdgeKey(a, b))) continue;
+      new_vertex_of_edge[EdgeKey(a, b)] = input.NumVertices() + static_cast<int>(split_edges_.size());
+      split_edges_.push_back({a, b});
+    }
+  }
+  for (int f = 0; f < input.NumFaces(); ++f) {
+    const Polygon& face = input.faces[f];
+    Polygon loop;
+    std::vector<int> on_plane;  // positions in `loop`
+    for (size_t i = 0; i < face.size(); ++i) {
+      const int a = face[i], b = face[(i + 1) % face.size()];
+      if (side[a] == 0) on_plane.push_back(static_cast<int>(loop.size()));
+      loop.push_back(a);
+      const auto it = new_vertex_of_edge.find(EdgeKey(a, b));
+      if (it != new_vertex_of_edge.end()) {
+        on_plane.push_back(static_cast<int>(loop.size()));
+        loop.push_back(it->second);
+      }
+    }
+    const int n = static_cast<int>(loop.size());
+    const bool adjacent = on_plane.size() == 2 &&
+                          ((on_plane[1] - on_plane[0]) == 1 || (on_plane[0] == 0 && on_plane[1] == n - 1));
+    if (on_plane.size() > 2) {
+      throw FieldError("plane_co", "the plane crosses face " + std::to_string(f) + " more than twice");
+    }
+    if (on_plane.size() < 2 || adjacent) {
+      output_faces_.push_back(loop);
+      continue;
+    }
+    Polygon first(loop.begin() + on_plane[0], loop.begin() + on_plane[1] + 1);
+    Polygon second(loop.begin() + on_plane[1], loop.end());
+    second.insert(second.end(), loop.begin(), loop.begin() + on_plane[0] + 1);
+    output_faces_.push_back(first);
+    output_faces_.push_back(second);
+  }
 }
 
 template <typename T>
 void KnifeCutOp::Apply(const T*, const T&, const Positions<T>& in, Positions<T>* out) const {
   *out = in;
-  for (int k = 0; k < 2; ++k) out->push_back((in[cut_edges_[k].first] + in[cut_edges_[k].second]) * T(0.5));
+  for (const auto& [a, b] : split_edges_) {
+    if (selector_) {
+      out->push_back((in[a] + in[b]) * T(0.5));
+      continue;
+    }
+    const Vec3<T> normal = plane_no_.cast<T>();
+    const T da = (in[a] - plane_co_.cast<T>()).dot(normal);
+    const T db = (in[b] - plane_co_.cast<T>()).dot(normal);
+    const T t = da / (da - db);
+    out->push_back(in[a] + (in[b] - in[a]) * t);
+  }
 }
 
 template void KnifeCutOp::Apply<double>(const double*, const double&, const Positions<double>&,
@@ -69,11 +145,19 @@ template void KnifeCutOp::Apply<double>(const double*, const double&, const Posi
 template void KnifeCutOp::Apply<JetT>(const JetT*, const JetT&, const Positions<JetT>&, Positions<JetT>*) const;
 
 Json KnifeCutOp::ParamsToJson() const {
-  return {{"face", selector_.ToJson()}, {"edge_points", {ToJson(points_[0]), ToJson(points_[1])}}};
+  if (!selector_) return {{"plane_co", ToJson(plane_co_)}, {"plane_no", ToJson(plane_no_)}};
+  return {{"face", selector_->ToJson()}, {"edge_points", {ToJson(points_[0]), ToJson(points_[1])}}};
 }
 
 std::string KnifeCutOp::BlenderCode() const {
-  return "me, bm = open_bmesh(obj)\nface = " + selector_.PythonExpr("bm") +
+  if (!selector_) {
+    return "me, bm = open_bmesh(obj)\n"
+           "bmesh.ops.bisect_plane(bm, geom=bm.verts[:] + bm.edges[:] + bm.faces[:], dist=" +
+           Py(kPlaneEpsilon) + ", plane_co=" + PyVec(plane_co_) + ", plane_no=" + PyVec(plane_no_) +
+           ", use_snap_center=False, clear_outer=False, clear_inner=False)\n"
+           "close_bmesh(me, bm)\n";
+  }
+  return "me, bm = open_bmesh(obj)\nface = " + selector_->PythonExpr("bm") +
          "[0]\n"
          "edges = [min(face.edges, key=lambda e: ((e.verts[0].co + e.verts[1].co) / 2 - Vector(p)).length)\n"
          "         for p in (" + PyVec(points_[0]) + ", " + PyVec(points_[1]) + ")]\n"

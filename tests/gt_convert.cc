@@ -69,6 +69,8 @@ Json ConvertGtSequence(const std::filesystem::path& path, std::string* why_not) 
     } else if (name == "LoopCut") {
       params = {{"axis", p.at("axis")}, {"cuts", p.at("cuts")},
                 {"near", p.value("near", Json::array({0.0, 0.0, 0.0}))}};
+    } else if (name == "KnifeCut" && p.contains("plane_co")) {
+      params = {{"plane_co", p.at("plane_co")}, {"plane_no", p.at("plane_no")}};
     } else {
       *why_not = "no converter for " + name + " yet";
       return nullptr;

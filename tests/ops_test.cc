@@ -279,6 +279,8 @@ INSTANTIATE_TEST_SUITE_P(
         BadInput{"missing_vertex",
                  R"({"operations": [{"op": "VertexDisplace", "params": {"groups": [{"verts": {"indices": [8]}, "offset": [0, 0, 1]}]}}]})",
                  "operation 0 (VertexDisplace): field 'groups[0].verts': vertex 8 does not exist at this step"},
+        BadInput{"knife_zero_normal", R"({"operations": [{"op": "KnifeCut", "params": {"plane_co": [0, 0, 0], "plane_no": [0, 0, 0]}}]})",
+                 "operation 0 (KnifeCut): field 'plane_no': must not be zero"},
         BadInput{"bad_word", R"({"operations": [{"op": "SimpleDeformTwist", "params": {"axis": "W'); import os; ('", "angle_deg": 10}}]})",
                  "operation 0 (SimpleDeformTwist): field 'axis': 'W'); import os; ('' is not one of X, Y, Z"},
         BadInput{"bad_gate", R"({"operations": [{"op": "GlobalAffineTranslate", "params": {"offset": [0, 0, 0]}, "gate": 2}]})",

@@ -1,0 +1,272 @@
+#include "io/read_input.h"
+
+#include "core/obj_io.h"
+
+#include <assimp/DefaultLogger.hpp>
+#include <assimp/Importer.hpp>
+#include <assimp/LogStream.hpp>
+#include <assimp/postprocess.h>
+#include <assimp/scene.h>
+#include <pcl/console/print.h>
+#include <pcl/features/normal_3d.h>
+#include <pcl/io/pcd_io.h>
+#include <pcl/io/ply_io.h>
+#include <pcl/point_types.h>
+
+#include <algorithm>
+#include <cmath>
+#include <filesystem>
+#include <fstream>
+#include <map>
+#include <mutex>
+#include <sstream>
+#include <stdexcept>
+
+namespace opgraph {
+namespace {
+
+namespace fs = std::filesystem;
+
+std::string Lowercase(std::string s) {
+  std::transform(s.begin(), s.end(), s.begin(), [](unsigned char c) { return std::tolower(c); });
+  return s;
+}
+
+[[noreturn]] void Fail(const std::string& path, const std::string& message) {
+  throw std::runtime_error(path + ": " + message);
+}
+
+// Welds vertices at exactly equal positions (parts of an OBJ or glTF scene that share corners
+// arrive as separate meshes) and drops faces that collapse below 3 distinct vertices.
+Mesh WeldExactDuplicates(const Mesh& mesh) {
+  std::map<std::tuple<double, double, double>, int> index_of_position;
+  std::vector<int> remap(mesh.vertices.size());
+  Mesh welded;
+  for (size_t v = 0; v < mesh.vertices.size(); ++v) {
+    const Vec3d& p = mesh.vertices[v];
+    const auto [it, inserted] = index_of_position.emplace(std::make_tuple(p.x(), p.y(), p.z()), welded.NumVertices());
+    if (inserted) welded.vertices.push_back(p);
+    remap[v] = it->second;
+  }
+  for (const Polygon& face : mesh.faces) {
+    Polygon loop;
+    for (int v : face) {
+      if (loop.empty() || loop.back() != remap[v]) loop.push_back(remap[v]);
+    }
+    while (loop.size() > 1 && loop.front() == loop.back()) loop.pop_back();
+    if (loop.size() >= 3) welded.faces.push_back(loop);
+  }
+  return welded;
+}
+
+// Collects the errors Assimp logs: some loaders repair corrupt data (an OFF face index out of
+// range is clamped) and only log it, and a repaired corrupt file must not pass as valid.
+class AssimpErrorCollector : public Assimp::LogStream {
+ public:
+  void write(const char* message) override {
+    if (first_error_.empty()) first_error_ = message;
+  }
+  std::string first_error() const {
+    std::string text = first_error_;
+    text.erase(std::remove(text.begin(), text.end(), '\n'), text.end());
+    // Drop the logger's "Error, T0: " prefix.
+    if (text.rfind("Error, ", 0) == 0 && text.find(": ") != std::string::npos) text = text.substr(text.find(": ") + 2);
+    return text;
+  }
+
+ private:
+  std::string first_error_;
+};
+
+InputGeometry ReadWithAssimp(const std::string& path) {
+  // Assimp's logger is global.
+  static std::mutex logger_mutex;
+  const std::lock_guard<std::mutex> lock(logger_mutex);
+  Assimp::DefaultLogger::create(nullptr, Assimp::Logger::NORMAL, 0);
+  auto* errors = new AssimpErrorCollector;  // the logger owns and deletes its streams
+  Assimp::DefaultLogger::get()->attachStream(errors, Assimp::Logger::Err);
+  struct KillLogger {
+    ~KillLogger() { Assimp::DefaultLogger::kill(); }
+  } kill_logger;
+  Assimp::Importer importer;
+  // Points and lines are kept (a PLY without faces is a point cloud, which Assimp's own
+  // validation step would reject; CheckGeometry validates instead); node transforms are baked so
+  // parts land where the file places them.
+  const aiScene* scene =
+      importer.ReadFile(path, aiProcess_JoinIdenticalVertices | aiProcess_PreTransformVertices);
+  if (scene == nullptr) Fail(path, std::string("cannot read mesh: ") + importer.GetErrorString());
+  if (!errors->first_error().empty()) Fail(path, "corrupt mesh: " + errors->first_error());
+  // Parts are concatenated; only vertices used by a face are kept (stray points and line ends
+  // carry no surface).
+  Mesh mesh;
+  for (unsigned m = 0; m < scene->mNumMeshes; ++m) {
+    const aiMesh* part = scene->mMeshes[m];
+    std::vector<int> index_in_mesh(part->mNumVertices, -1);
+    for (unsigned f = 0; f < part->mNumFaces; ++f) {
+      const aiFace& face = part->mFaces[f];
+      if (face.mNumIndices < 3) continue;
+      Polygon loop;
+      for (unsigned k = 0; k < face.mNumIndices; ++k) {
+        const unsigned v = face.mIndices[k];
+        if (v >= part->mNumVertices) Fail(path, "face refers to a missing vertex");
+        if (index_in_mesh[v] < 0) {
+          index_in_mesh[v] = mesh.NumVertices();
+          mesh.vertices.emplace_back(part->mVertices[v].x, part->mVertices[v].y, part->mVertices[v].z);
+        }
+        loop.push_back(index_in_mesh[v]);
+      }
+      mesh.faces.push_back(std::move(loop));
+    }
+  }
+  if (mesh.faces.empty()) Fail(path, "no faces (for a point cloud use PLY, PCD or XYZ)");
+  InputGeometry input;
+  input.mesh = WeldExactDuplicates(mesh);
+  return input;
+}
+
+InputGeometry FromPclBlob(const pcl::PCLPointCloud2& blob) {
+  pcl::PointCloud<pcl::PointNormal> cloud;
+  pcl::fromPCLPointCloud2(blob, cloud);
+  bool has_normals = false;
+  for (const auto& field : blob.fields) has_normals = has_normals || field.name == "normal_x";
+  InputGeometry input;
+  for (const auto& p : cloud.points) {
+    input.mesh.vertices.emplace_back(p.x, p.y, p.z);
+    if (has_normals) input.normals.emplace_back(p.normal_x, p.normal_y, p.normal_z);
+  }
+  return input;
+}
+
+InputGeometry ReadPcd(const std::string& path) {
+  pcl::PCLPointCloud2 blob;
+  pcl::PCDReader reader;
+  if (reader.read(path, blob) < 0) Fail(path, "cannot read PCD point cloud");
+  return FromPclBlob(blob);
+}
+
+InputGeometry ReadPlyPoints(const std::string& path) {
+  pcl::PCLPointCloud2 blob;
+  pcl::PLYReader reader;
+  if (reader.read(path, blob) < 0) Fail(path, "cannot read PLY");
+  return FromPclBlob(blob);
+}
+
+InputGeometry ReadXyz(const std::string& path) {
+  std::ifstream in(path);
+  InputGeometry input;
+  std::string line;
+  int line_number = 0;
+  int columns = -1;
+  while (std::getline(in, line)) {
+    ++line_number;
+    const size_t start = line.find_first_not_of(" \t\r");
+    if (start == std::string::npos || line[start] == '#') continue;
+    std::replace(line.begin(), line.end(), ',', ' ');
+    std::istringstream fields(line);
+    std::vector<double> values;
+    std::string token;
+    while (fields >> token) {
+      char* end = nullptr;
+      const double value = std::strtod(token.c_str(), &end);
+      if (end == token.c_str() || *end != '\0') Fail(path, "line " + std::to_string(line_number) + ": '" + token.substr(0, 20) + "' is not a number");
+      values.push_back(value);
+    }
+    if (values.size() < 3) Fail(path, "line " + std::to_string(line_number) + ": expected x y z [nx ny nz]");
+    const int row_columns = values.size() >= 6 ? 6 : 3;
+    if (columns < 0) columns = row_columns;
+    if (row_columns != columns) Fail(path, "line " + std::to_string(line_number) + ": column count changes");
+    input.mesh.vertices.emplace_back(values[0], values[1], values[2]);
+    if (columns == 6) input.normals.emplace_back(values[3], values[4], values[5]);
+  }
+  return input;
+}
+
+// True when the PLY header declares no faces (a point cloud, which Assimp cannot load).
+bool PlyHasNoFaces(const std::string& path) {
+  std::ifstream in(path, std::ios::binary);
+  std::string line;
+  while (std::getline(in, line) && line.rfind("end_header", 0) != 0) {
+    std::istringstream words(line);
+    std::string element, name;
+    int count = 0;
+    if (words >> element >> name >> count && element == "element" && name == "face" && count > 0) return false;
+  }
+  return true;
+}
+
+void CheckGeometry(const std::string& path, InputGeometry* input) {
+  const Positions<double>& vertices = input->mesh.vertices;
+  if (vertices.empty()) Fail(path, "no vertices");
+  for (size_t v = 0; v < vertices.size(); ++v) {
+    if (!vertices[v].allFinite()) Fail(path, "vertex " + std::to_string(v) + " has a non-finite coordinate");
+  }
+  Vec3d lo = vertices[0], hi = vertices[0];
+  for (const Vec3d& p : vertices) lo = lo.cwiseMin(p), hi = hi.cwiseMax(p);
+  if (!((hi - lo).maxCoeff() > 0)) Fail(path, "all vertices are at one point (zero extent)");
+  const std::string problem = input->mesh.Validate();
+  if (!problem.empty()) Fail(path, problem);
+  // Unusable file normals are replaced by estimates rather than trusted.
+  for (Vec3d& n : input->normals) {
+    if (!n.allFinite() || n.norm() < 1e-12) {
+      input->normals.clear();
+      break;
+    }
+    n.normalize();
+  }
+}
+
+}  // namespace
+
+InputGeometry ReadInput(const std::string& path) {
+  // PCL warns on stderr about absent optional fields (normals); errors are ours to report.
+  pcl::console::setVerbosityLevel(pcl::console::L_ALWAYS);
+  std::error_code error;
+  if (!fs::is_regular_file(path, error)) Fail(path, "cannot open file (missing or not a file)");
+  if (fs::file_size(path, error) == 0) Fail(path, "file is empty");
+  const std::string extension = Lowercase(fs::path(path).extension().string());
+  InputGeometry input;
+  if (extension == ".pcd") {
+    input = ReadPcd(path);
+  } else if (extension == ".xyz" || extension == ".pts" || extension == ".txt") {
+    input = ReadXyz(path);
+  } else if (extension == ".obj") {
+    // Our own reader: it keeps one vertex list across groups and rejects non-finite numbers,
+    // which Assimp's OBJ loader silently drops.
+    input.mesh = ReadObj(path);
+  } else if (extension == ".ply" && PlyHasNoFaces(path)) {
+    input = ReadPlyPoints(path);
+  } else {
+    Assimp::Importer probe;
+    if (!probe.IsExtensionSupported(extension)) Fail(path, "unsupported file type '" + extension + "'");
+    input = ReadWithAssimp(path);
+  }
+  CheckGeometry(path, &input);
+  return input;
+}
+
+Positions<double> EstimatePointNormals(const Positions<double>& points, int k) {
+  auto cloud = std::make_shared<pcl::PointCloud<pcl::PointXYZ>>();
+  cloud->reserve(points.size());
+  Vec3d centroid = Vec3d::Zero();
+  for (const Vec3d& p : points) {
+    cloud->push_back(pcl::PointXYZ(static_cast<float>(p.x()), static_cast<float>(p.y()), static_cast<float>(p.z())));
+    centroid += p;
+  }
+  centroid /= std::max<size_t>(points.size(), 1);
+  pcl::NormalEstimation<pcl::PointXYZ, pcl::Normal> estimation;
+  estimation.setInputCloud(cloud);
+  estimation.setSearchMethod(std::make_shared<pcl::search::KdTree<pcl::PointXYZ>>());
+  estimation.setKSearch(std::min<int>(k, static_cast<int>(points.size())));
+  pcl::PointCloud<pcl::Normal> normals;
+  estimation.compute(normals);
+  Positions<double> result(points.size());
+  for (size_t i = 0; i < points.size(); ++i) {
+    Vec3d n(normals[i].normal_x, normals[i].normal_y, normals[i].normal_z);
+    if (!n.allFinite() || n.norm() < 1e-12) n = (points[i] - centroid).normalized();
+    if (n.dot(points[i] - centroid) < 0) n = -n;
+    result[i] = n.normalized();
+  }
+  return result;
+}
+
+}  // namespace opgraph
