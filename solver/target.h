@@ -1,6 +1,5 @@
-// The shape a sequence is fitted to: a mesh (OBJ) or a point cloud (XYZ text: "x y z" or
-// "x y z nx ny nz" per line; ASCII PLY with vertices and optional faces), with seeded surface
-// samples and normals and a kd-tree over them.
+// The shape a sequence is fitted to: a mesh or a point cloud (any format io/read_input reads),
+// with seeded surface samples and normals and a kd-tree over them.
 //
 // Frames: everything stays in the input's frame and units (the sequence is fitted there, so
 // outputs need no transform back); `centre` and `scale` map it to the unit box used by the
@@ -19,7 +18,7 @@ namespace opgraph {
 struct TargetOptions {
   int num_samples = 10000;     // surface samples of a mesh target (a cloud keeps its points)
   int max_cloud_points = 50000;  // larger clouds are subsampled (seeded)
-  int normal_neighbours = 12;  // for estimating a cloud's normals (PCA)
+  int normal_neighbours = 16;  // for estimating a cloud's normals (io/read_input)
   uint64_t seed = 1;
   // Empty when valid, else the problem.
   std::string Check() const;
@@ -51,8 +50,8 @@ class Target {
   std::unique_ptr<PointTree> tree_;
 };
 
-// Loads `path` (.obj, .xyz, .txt, .ply by extension). Throws std::runtime_error with a one-line
-// message naming the problem.
+// Loads `path` with ReadInput. Throws std::runtime_error with a one-line message naming the
+// problem.
 std::unique_ptr<Target> LoadTarget(const std::string& path, const TargetOptions& options);
 
 }  // namespace opgraph

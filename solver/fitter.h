@@ -1,0 +1,106 @@
+// Fits every continuous parameter (and optionally the gates) of a sequence skeleton to a
+// target: Chamfer residuals with correspondences fixed inside each solve (Levenberg-Marquardt,
+// or Adam over exactly the same objective and gradients), re-estimated in an outer ICP loop
+// until the loss stops improving.
+//
+// With fit_gates the fit runs in stages: (1) the parameters with the gates held, (2) the gates
+// under the gate sparsity weight with the parameters held, (3) finalisation: ops whose gate fell below prune_gate are
+// removed, the other free gates are folded into their op's parameters (p <- identity +
+// g (p - identity), which is each op's gate blend) and set to 1, and a last solve polishes
+// the parameters with gates fixed, so the result is exportable to Blender.
+//
+// Deterministic for a given seed (single-threaded residual evaluation by default).
+#pragma once
+
+#include <cstdint>
+#include <iosfwd>
+#include <memory>
+#include <string>
+#include <vector>
+
+#include "residuals/correspondence_cost.h"
+#include "solver/program.h"
+#include "solver/target.h"
+
+namespace opgraph {
+
+enum class RobustLoss { kNone, kHuber, kCauchy };
+enum class Optimizer { kCeres, kAdam };
+
+struct FitterOptions {
+  Optimizer optimizer = Optimizer::kCeres;
+  int num_output_samples = 3000;  // output-to-target samples per correspondence update
+  int num_target_samples = 3000;  // target-to-output samples (the first of the target's samples)
+  double output_to_target_weight = 1.0;
+  double target_to_output_weight = 1.0;
+  ChamferMetric metric = ChamferMetric::kPointToPlane;
+  RobustLoss loss = RobustLoss::kNone;
+  double loss_scale = 0.02;  // robust loss scale, unit-box units
+  bool fit_gates = false;
+  double gate_sparsity_weight = 1e-4;  // stage 2 weight of sum(g^2) / 2 (data loss: unit box)
+  double prune_gate = 0.5;
+  int max_outer_iterations = 15;    // correspondence updates per stage
+  int max_inner_iterations = 25;    // LM iterations per solve
+  int adam_iterations = 150;        // Adam steps per solve
+  double adam_learning_rate = 0.01;
+  double min_relative_improvement = 1e-3;  // outer loop stops below this
+  int num_threads = 1;
+  uint64_t seed = 1;
+  std::vector<ParameterRangeRule> domain_rules;
+  std::ostream* progress = nullptr;  // one line per solve when set
+  // Empty when valid, else the problem.
+  std::string Check() const;
+};
+
+struct FitSummary {
+  double initial_loss = 0;  // data loss at the start (mean squared distances, unit box, summed)
+  double final_loss = 0;
+  int outer_iterations = 0;
+  int inner_iterations = 0;      // LM iterations or Adam steps
+  int jacobian_evaluations = 0;
+  double seconds = 0;
+  std::vector<double> gates_before_finalisation;  // per op of the input sequence
+  std::vector<int> pruned_ops;                    // indices in the input sequence
+  // (seconds since start, data loss) after every solve, for convergence comparisons.
+  std::vector<std::pair<double, double>> history;
+};
+
+class Fitter {
+ public:
+  // Prepares the sequence's topology at its current parameters (discrete choices fixed).
+  // Throws SequenceError like EvaluateSequence; std::invalid_argument on bad options.
+  Fitter(const Target& target, Sequence* sequence, const FitterOptions& options);
+  ~Fitter();
+
+  // The program being fitted (its blocks alias the sequence's op parameters, so a caller may
+  // set start values after construction without changing the discrete choices).
+  Program& program() { return *program_; }
+
+  // Fits in place. The sequence afterwards holds the fitted parameters and gates (pruned ops
+  // removed when fitting gates).
+  FitSummary Fit();
+
+  // Data loss at the current parameters with fresh correspondences.
+  double CurrentLoss();
+
+ private:
+  struct Correspondences;
+  void BuildCorrespondences(uint64_t seed, Correspondences* out);
+  double RunStage(double sparsity_weight, FitSummary* summary);
+  double Solve(const Correspondences& correspondences, double sparsity_weight, FitSummary* summary);
+  void Finalise(FitSummary* summary);
+
+  const Target& target_;
+  Sequence* sequence_;
+  FitterOptions options_;
+  std::unique_ptr<Program> program_;
+  double sparsity_weight_ = 0;
+  bool hold_params_ = false, hold_gates_ = false;  // blocks held constant in the current stage
+  uint64_t update_count_ = 0;
+  double start_time_ = 0;
+};
+
+// Runs Fitter(target, sequence, options).Fit().
+FitSummary FitSequence(const Target& target, Sequence* sequence, const FitterOptions& options);
+
+}  // namespace opgraph
