@@ -1,0 +1,421 @@
+#include "solver/zero_shot.h"
+
+#include <Eigen/Eigenvalues>
+
+#include <algorithm>
+#include <chrono>
+#include <cmath>
+#include <limits>
+#include <ostream>
+#include <sstream>
+
+#include "core/geometry.h"
+#include "ops/sequence.h"
+
+namespace opgraph {
+namespace {
+
+using Clock = std::chrono::steady_clock;
+constexpr double kInf = std::numeric_limits<double>::infinity();
+const char* const kAxisNames[3] = {"X", "Y", "Z"};
+
+Json MakeOp(const std::string& name, Json params) { return {{"op", name}, {"params", std::move(params)}}; }
+
+// A sequence in the controller's fixed layout (see zero_shot.h). Each part is a list of op
+// documents; splitting a fitted document back into parts relies on fits keeping the op count.
+struct Layout {
+  std::vector<Json> cube_frame;  // loop cuts and loop scales on the 2x2x2 cube
+  Json scale, rotate, translate;
+  std::vector<Json> deforms;
+  std::vector<Json> details;  // extrusions (and their insets)
+  bool subdivide = false;
+
+  int NumOps() const {
+    return static_cast<int>(cube_frame.size() + deforms.size() + details.size()) + 3 + (subdivide ? 1 : 0);
+  }
+  // Index of the last op before Subdivision / Rotate: the step whose mesh is the cage.
+  int CageStep() const { return static_cast<int>(cube_frame.size() + deforms.size() + details.size()); }
+
+  Json Document() const {
+    Json ops = Json::array();
+    for (const Json& op : cube_frame) ops.push_back(op);
+    ops.push_back(scale);
+    for (const Json& op : deforms) ops.push_back(op);
+    for (const Json& op : details) ops.push_back(op);
+    if (subdivide) ops.push_back(MakeOp("Subdivision", {{"levels", 2}}));
+    ops.push_back(rotate);
+    ops.push_back(translate);
+    return {{"version", kSequenceFormatVersion}, {"start", {{"primitive", "cube"}, {"size", 2.0}}}, {"operations", ops}};
+  }
+
+  // This layout with the parameters of `fitted` (a fit of Document()).
+  Layout WithParameters(const Json& fitted) const {
+    const Json& ops = fitted.at("operations");
+    Layout out = *this;
+    size_t i = 0;
+    for (Json& op : out.cube_frame) op = ops[i++];
+    out.scale = ops[i++];
+    for (Json& op : out.deforms) op = ops[i++];
+    for (Json& op : out.details) op = ops[i++];
+    if (subdivide) ++i;
+    out.rotate = ops[i++];
+    out.translate = ops[i++];
+    return out;
+  }
+};
+
+struct Trial {
+  Layout layout;
+  double loss = kInf;
+  bool ok = false;
+};
+
+class Controller {
+ public:
+  Controller(const Target& target, const ZeroShotOptions& options)
+      : target_(target), options_(options), start_(Clock::now()) {
+    search_options_.seed = options.seed;
+    search_options_.num_threads = options.num_threads;
+    search_options_.optimizer = options.optimizer;
+    search_options_.num_output_samples = 1500;
+    search_options_.num_target_samples = 1500;
+    search_options_.max_outer_iterations = 8;
+    search_options_.max_inner_iterations = 20;
+    final_options_ = search_options_;
+    final_options_.num_output_samples = 4000;
+    final_options_.num_target_samples = 4000;
+    final_options_.max_outer_iterations = 15;
+    final_options_.max_inner_iterations = 30;
+  }
+
+  ZeroShotResult Run() {
+    Trial best = FitGlobalAffine();
+    if (!best.ok) throw std::runtime_error("the global affine fit failed");
+    best = ConsiderSmoothing(best);
+    // Stages feed each other (a bend lets a profile help, a profile gives extrusions faces), so
+    // they repeat until a whole pass changes nothing.
+    for (int pass = 0; pass < 3 && InBudget(); ++pass) {
+      const double before = best.loss;
+      best = StageProfile(best);
+      best = StageDeforms(best);
+      best = StageDetails(best);
+      best = ConsiderSmoothing(best);
+      if (!(best.loss < before)) break;
+    }
+    return Finish(best);
+  }
+
+ private:
+  bool InBudget() const { return Seconds() < options_.time_budget_seconds; }
+  double Seconds() const { return std::chrono::duration<double>(Clock::now() - start_).count(); }
+
+  Trial Fit(const Layout& layout, const FitterOptions& options) {
+    Trial trial;
+    trial.layout = layout;
+    if (layout.NumOps() > options_.max_ops) return trial;
+    try {
+      Sequence sequence = ParseSequence(layout.Document());
+      const FitSummary summary = FitSequence(target_, &sequence, options);
+      ++num_fits_;
+      const Json fitted = SequenceToJson(sequence);
+      // The written sequence must replay: its selectors re-resolve at the fitted parameters.
+      Sequence replay = ParseSequence(fitted);
+      EvaluateSequence(&replay);
+      trial.layout = layout.WithParameters(fitted);
+      trial.loss = summary.final_loss;
+      trial.ok = std::isfinite(trial.loss);
+    } catch (const std::exception&) {
+      trial.ok = false;  // a proposal whose targets vanish or whose fit fails is rejected
+    }
+    return trial;
+  }
+
+  // Fits `propose`'s change of `best`; keeps it when the loss falls by more than the price of
+  // the ops it adds.
+  template <typename Propose>
+  Trial Consider(const std::string& stage, const Trial& best, Propose propose) {
+    if (!InBudget()) return best;
+    Layout layout = best.layout;
+    const std::string what = propose(&layout);
+    if (what.empty()) return best;
+    const Trial trial = Fit(layout, search_options_);
+    const int added = std::max(1, layout.NumOps() - best.layout.NumOps());
+    const bool accept = trial.ok && trial.loss < best.loss * std::pow(1.0 - options_.min_relative_gain, added);
+    Log(stage, best, trial, accept, what);
+    return accept ? trial : best;
+  }
+
+  void Log(const std::string& stage, const Trial& before, const Trial& after, bool accepted, const std::string& what) {
+    std::ostringstream line;
+    line.precision(3);
+    line << "[zero-shot] " << stage << ": " << what << ": loss " << before.loss << " -> "
+         << (after.ok ? after.loss : kInf) << (accepted ? " accepted" : " rejected") << " ("
+         << (accepted ? after : before).layout.NumOps() << " ops, " << num_fits_ << " fits, " << std::fixed
+         << Seconds() << " s)";
+    decisions_.push_back(line.str());
+    if (options_.progress != nullptr) *options_.progress << line.str() << std::endl;
+  }
+
+  // Cube scaled to the target's extent along its principal axes (identity when they are close
+  // to the coordinate axes, as for models built axis-aligned), rotated and translated onto it.
+  Trial FitGlobalAffine() {
+    const Positions<double>& points = target_.points();
+    Vec3d mean = Vec3d::Zero();
+    for (const Vec3d& p : points) mean += p;
+    mean /= static_cast<double>(points.size());
+    Eigen::Matrix3d covariance = Eigen::Matrix3d::Zero();
+    for (const Vec3d& p : points) covariance += (p - mean) * (p - mean).transpose();
+    Eigen::SelfAdjointEigenSolver<Eigen::Matrix3d> eigen(covariance);
+    Eigen::Matrix3d principal = eigen.eigenvectors();
+    if (principal.determinant() < 0) principal.col(2) *= -1;
+    // Models are often built axis-aligned, and principal axes of (near) equal variance are
+    // arbitrary: the coordinate axes are tried too, and kept unless clearly worse.
+    Trial aligned = FitPose(Eigen::Matrix3d::Identity());
+    const Vec3d aligned_half = half_extent_;
+    Trial rotated = FitPose(principal);
+    if (aligned.ok && !(rotated.loss < 0.7 * aligned.loss)) {
+      half_extent_ = aligned_half;
+      Log("affine", aligned, aligned, true, "Scale, Rotate, Translate (coordinate axes)");
+      return aligned;
+    }
+    Log("affine", rotated, rotated, true, "Scale, Rotate, Translate (principal axes)");
+    return rotated;
+  }
+
+  Trial FitPose(const Eigen::Matrix3d& world_from_local) {
+    const Positions<double>& points = target_.points();
+    Vec3d lo = Vec3d::Constant(kInf), hi = Vec3d::Constant(-kInf);
+    for (const Vec3d& p : points) {
+      const Vec3d q = world_from_local.transpose() * p;
+      lo = lo.cwiseMin(q), hi = hi.cwiseMax(q);
+    }
+    const double extent = (hi - lo).maxCoeff();
+    const Vec3d half = ((hi - lo) / 2).cwiseMax(Vec3d::Constant(1e-3 * extent));
+    // R = Rz Ry Rx: Eigen's eulerAngles(2, 1, 0) returns (z, y, x).
+    const Vec3d zyx = world_from_local.eulerAngles(2, 1, 0);
+    Layout layout;
+    layout.scale = MakeOp("GlobalAffineScale", {{"scale", ToJson(half)}});
+    layout.rotate = MakeOp("GlobalAffineRotate",
+                           {{"rotation_deg", ToJson(Vec3d(RadToDeg(zyx[2]), RadToDeg(zyx[1]), RadToDeg(zyx[0])))}});
+    layout.translate = MakeOp("GlobalAffineTranslate", {{"offset", ToJson(Vec3d(world_from_local * ((hi + lo) / 2)))}});
+    half_extent_ = half;
+    return Fit(layout, search_options_);
+  }
+
+  Trial ConsiderSmoothing(const Trial& best) {
+    return Consider("smooth", best, [&](Layout* l) -> std::string {
+      if (l->subdivide) return "";
+      l->subdivide = true;
+      return "+Subdivision(2)";
+    });
+  }
+
+  int LongAxis() const {
+    int axis = 0;
+    for (int a = 1; a < 3; ++a) {
+      if (half_extent_[a] > half_extent_[axis]) axis = a;
+    }
+    return axis;
+  }
+
+  // LoopCut along `axis` on the cube with an EdgeLoopAffineScale per new loop.
+  static std::vector<Json> ProfileOps(int axis, int cuts) {
+    std::vector<Json> ops = {MakeOp("LoopCut", {{"axis", kAxisNames[axis]}, {"cuts", cuts}, {"near", {0, 0, 0}}})};
+    const double spacing = 2.0 / (cuts + 1);
+    for (int i = 0; i < cuts; ++i) {
+      const double at = -1.0 + spacing * (i + 1);
+      Json lo = {nullptr, nullptr, nullptr}, hi = {nullptr, nullptr, nullptr};
+      lo[axis] = at - 0.3 * spacing;
+      hi[axis] = at + 0.3 * spacing;
+      ops.push_back(MakeOp("EdgeLoopAffineScale",
+                           {{"verts", {{"box", {lo, hi}}, {"expect", 4}}}, {"scale", {1.0, 1.0, 1.0}}}));
+    }
+    return ops;
+  }
+
+  Trial StageProfile(Trial best) {
+    const int axis = LongAxis();
+    for (int cuts : {2, 4, 8}) {
+      best = Consider("profile", best, [&](Layout* l) -> std::string {
+        const int loops_now = static_cast<int>(l->cube_frame.size()) - 1;
+        if (loops_now >= cuts) return "";
+        l->cube_frame = ProfileOps(axis, cuts);
+        return "LoopCut " + std::string(kAxisNames[axis]) + " x" + std::to_string(cuts) + " + " +
+               std::to_string(cuts) + " EdgeLoopAffineScale";
+      });
+    }
+    return best;
+  }
+
+  Trial StageDeforms(Trial best) {
+    const int axis = LongAxis();
+    struct Deform {
+      std::string op;
+      int axis;
+      Json params;
+    };
+    std::vector<Deform> deforms = {{"SimpleDeformTwist", axis, {{"angle_deg", 30.0}}},
+                                   {"SimpleDeformTaper", axis, {{"factor", 0.2}}}};
+    for (int a = 0; a < 3; ++a) {
+      if (a != axis) deforms.push_back({"SimpleDeformBend", a, {{"angle_deg", 30.0}}});
+    }
+    for (const Deform& deform : deforms) {
+      best = Consider("deform", best, [&](Layout* l) -> std::string {
+        for (const Json& op : l->deforms) {
+          if (op["op"] == deform.op && op["params"]["axis"] == kAxisNames[deform.axis]) return "";
+        }
+        Json params = deform.params;
+        params["axis"] = kAxisNames[deform.axis];
+        l->deforms.push_back(MakeOp(deform.op, params));
+        std::string what = "+" + deform.op + " " + kAxisNames[deform.axis];
+        // Deformations need rings along the long axis to bend smoothly.
+        if (l->cube_frame.empty()) {
+          l->cube_frame = {MakeOp("LoopCut", {{"axis", kAxisNames[axis]}, {"cuts", 7}, {"near", {0, 0, 0}}})};
+          what += " (with LoopCut " + std::string(kAxisNames[axis]) + " x7)";
+        }
+        return what;
+      });
+    }
+    return best;
+  }
+
+  // Extrude proposals from the residuals: target samples, brought into the cube's frame, are
+  // assigned to the nearest cage face; faces with many samples far outside (protrusion) or
+  // inside (cavity) along their normal become candidates.
+  Trial StageDetails(Trial best) {
+    Sequence sequence = ParseSequence(best.layout.Document());
+    const std::vector<Mesh> steps = EvaluateSequence(&sequence);
+    const Mesh& cage = steps[best.layout.CageStep()];
+    const Json& rotation = best.layout.rotate["params"]["rotation_deg"];
+    const Json& offset = best.layout.translate["params"]["offset"];
+    const Eigen::Matrix3d world_from_local =
+        EulerXYZToMatrix(DegToRad(rotation[0]), DegToRad(rotation[1]), DegToRad(rotation[2]));
+    const Vec3d translation(offset[0], offset[1], offset[2]);
+    const int num_faces = cage.NumFaces();
+    std::vector<Vec3d> centroids(num_faces), normals(num_faces);
+    for (int f = 0; f < num_faces; ++f) {
+      centroids[f] = FaceCentroid(cage.vertices, cage.faces[f]);
+      normals[f] = SafeNormalized(FaceAreaNormal(cage.vertices, cage.faces[f]));
+    }
+    const double diagonal = 2.0 * half_extent_.norm();
+    const double threshold = 0.04 * diagonal;
+    std::vector<std::vector<double>> outside(num_faces), inside(num_faces);
+    const Positions<double>& points = target_.points();
+    const size_t stride = std::max<size_t>(1, points.size() / 4000);
+    for (size_t i = 0; i < points.size(); i += stride) {
+      const Vec3d q = world_from_local.transpose() * (points[i] - translation);
+      int nearest = 0;
+      double nearest_distance = kInf;
+      for (int f = 0; f < num_faces; ++f) {
+        const double d = (q - centroids[f]).squaredNorm();
+        if (d < nearest_distance) nearest_distance = d, nearest = f;
+      }
+      const double along = (q - centroids[nearest]).dot(normals[nearest]);
+      if (along > threshold) outside[nearest].push_back(along);
+      if (along < -threshold) inside[nearest].push_back(-along);
+    }
+    const size_t min_support = std::max<size_t>(5, points.size() / stride / 100);
+    struct Candidate {
+      int face;
+      double height;  // signed
+      size_t support;
+    };
+    std::vector<Candidate> candidates;
+    for (int f = 0; f < num_faces; ++f) {
+      for (int sign : {1, -1}) {
+        std::vector<double>& d = sign > 0 ? outside[f] : inside[f];
+        if (d.size() < min_support) continue;
+        std::nth_element(d.begin(), d.begin() + d.size() * 3 / 4, d.end());
+        candidates.push_back({f, sign * d[d.size() * 3 / 4], d.size()});
+      }
+    }
+    std::sort(candidates.begin(), candidates.end(), [](const Candidate& a, const Candidate& b) {
+      return a.support * std::abs(a.height) > b.support * std::abs(b.height);
+    });
+    if (candidates.size() > 3) candidates.resize(3);
+    for (const Candidate& c : candidates) {
+      best = Consider("detail", best, [&](Layout* l) -> std::string {
+        const Json faces = {{"centers", {ToJson(centroids[c.face])}}, {"expect", 1}};
+        if (c.height > 0) {
+          l->details.push_back(MakeOp("Extrude", {{"faces", faces}, {"height", c.height}, {"mode", "individual"}}));
+          return "+Extrude out " + std::to_string(c.height);
+        }
+        // A cavity: inset the face, then push the inner face in.
+        l->details.push_back(MakeOp("Inset", {{"faces", faces}, {"thickness", 0.1 * half_extent_.minCoeff()}}));
+        l->details.push_back(MakeOp("Extrude", {{"faces", faces}, {"height", c.height}, {"mode", "region"}}));
+        return "+Inset +Extrude in " + std::to_string(c.height);
+      });
+    }
+    return best;
+  }
+
+  ZeroShotResult Finish(const Trial& best) {
+    // Gates: ops that do not earn their place are pruned, then a polishing fit.
+    Sequence sequence = ParseSequence(best.layout.Document());
+    FitterOptions options = final_options_;
+    options.fit_gates = true;
+    double loss = best.loss;
+    Json document = best.layout.Document();
+    try {
+      const FitSummary summary = FitSequence(target_, &sequence, options);
+      ++num_fits_;
+      Json fitted = SequenceToJson(sequence);
+      Sequence replay = ParseSequence(fitted);
+      EvaluateSequence(&replay);
+      // Pruning must not undo what the search paid for.
+      if (summary.final_loss <= best.loss * (1 + options_.min_relative_gain)) {
+        document = fitted;
+        loss = summary.final_loss;
+      }
+      std::ostringstream line;
+      line << "[zero-shot] prune: " << summary.pruned_ops.size() << " op(s) below the gate threshold: loss "
+           << best.loss << " -> " << summary.final_loss << (document == fitted ? " accepted" : " rejected");
+      decisions_.push_back(line.str());
+      if (options_.progress != nullptr) *options_.progress << line.str() << std::endl;
+    } catch (const std::exception& e) {
+      decisions_.push_back(std::string("[zero-shot] final gate fit failed, kept the searched sequence: ") + e.what());
+    }
+    if (document == best.layout.Document()) {  // polish the searched sequence with more samples
+      const Trial polished = Fit(best.layout, final_options_);
+      if (polished.ok) document = polished.layout.Document(), loss = polished.loss;
+    }
+    ZeroShotResult result;
+    result.sequence = document;
+    result.loss = loss;
+    result.num_fits = num_fits_;
+    result.seconds = Seconds();
+    result.decisions = decisions_;
+    if (options_.progress != nullptr) {
+      *options_.progress << "[zero-shot] final: " << document["operations"].size() << " ops, loss " << loss << ", "
+                         << num_fits_ << " fits, " << result.seconds << " s" << std::endl;
+    }
+    return result;
+  }
+
+  const Target& target_;
+  ZeroShotOptions options_;
+  FitterOptions search_options_;
+  FitterOptions final_options_;
+  Clock::time_point start_;
+  Vec3d half_extent_ = Vec3d::Ones();
+  int num_fits_ = 0;
+  std::vector<std::string> decisions_;
+};
+
+}  // namespace
+
+std::string ZeroShotOptions::Check() const {
+  if (!(time_budget_seconds > 0)) return "time budget must be positive";
+  if (max_ops < 3) return "max ops must be at least 3";
+  if (!(min_relative_gain >= 0 && min_relative_gain < 1)) return "min relative gain must be in [0, 1)";
+  if (num_threads < 1) return "threads must be at least 1";
+  return "";
+}
+
+ZeroShotResult RecoverSequence(const Target& target, const ZeroShotOptions& options) {
+  const std::string problem = options.Check();
+  if (!problem.empty()) throw std::invalid_argument(problem);
+  return Controller(target, options).Run();
+}
+
+}  // namespace opgraph
