@@ -24,21 +24,23 @@ Json MakeOp(const std::string& name, Json params) { return {{"op", name}, {"para
 // A sequence in the controller's fixed layout (see zero_shot.h). Each part is a list of op
 // documents; splitting a fitted document back into parts relies on fits keeping the op count.
 struct Layout {
-  std::vector<Json> cube_frame;  // loop cuts and loop scales on the 2x2x2 cube
+  std::vector<Json> profile;  // on the 2x2x2 cube: loop cuts along the long axis, loop scales
+  std::vector<Json> grid;     // then: loop cuts across the other axes, loop scales
   Json scale, rotate, translate;
   std::vector<Json> deforms;
   std::vector<Json> details;  // extrusions (and their insets)
   bool subdivide = false;
 
   int NumOps() const {
-    return static_cast<int>(cube_frame.size() + deforms.size() + details.size()) + 3 + (subdivide ? 1 : 0);
+    return static_cast<int>(profile.size() + grid.size() + deforms.size() + details.size()) + 3 + (subdivide ? 1 : 0);
   }
   // Index of the last op before Subdivision / Rotate: the step whose mesh is the cage.
-  int CageStep() const { return static_cast<int>(cube_frame.size() + deforms.size() + details.size()); }
+  int CageStep() const { return static_cast<int>(profile.size() + grid.size() + deforms.size() + details.size()); }
 
   Json Document() const {
     Json ops = Json::array();
-    for (const Json& op : cube_frame) ops.push_back(op);
+    for (const Json& op : profile) ops.push_back(op);
+    for (const Json& op : grid) ops.push_back(op);
     ops.push_back(scale);
     for (const Json& op : deforms) ops.push_back(op);
     for (const Json& op : details) ops.push_back(op);
@@ -53,7 +55,8 @@ struct Layout {
     const Json& ops = fitted.at("operations");
     Layout out = *this;
     size_t i = 0;
-    for (Json& op : out.cube_frame) op = ops[i++];
+    for (Json& op : out.profile) op = ops[i++];
+    for (Json& op : out.grid) op = ops[i++];
     out.scale = ops[i++];
     for (Json& op : out.deforms) op = ops[i++];
     for (Json& op : out.details) op = ops[i++];
@@ -98,7 +101,8 @@ class Controller {
       const double before = best.loss;
       best = StageProfile(best);
       best = StageDeforms(best);
-      best = StageDetails(best);
+      best = RepeatDetails(best);
+      best = StageGrid(best);
       best = ConsiderSmoothing(best);
       if (!(best.loss < before)) break;
     }
@@ -218,8 +222,9 @@ class Controller {
     return axis;
   }
 
-  // LoopCut along `axis` on the cube with an EdgeLoopAffineScale per new loop.
-  static std::vector<Json> ProfileOps(int axis, int cuts) {
+  // LoopCut along `axis` on the cube with an EdgeLoopAffineScale per new loop (`expect`: the
+  // loop's vertex count, < 0 when earlier cuts make it vary).
+  static std::vector<Json> LoopOps(int axis, int cuts, int expect) {
     std::vector<Json> ops = {MakeOp("LoopCut", {{"axis", kAxisNames[axis]}, {"cuts", cuts}, {"near", {0, 0, 0}}})};
     const double spacing = 2.0 / (cuts + 1);
     for (int i = 0; i < cuts; ++i) {
@@ -227,8 +232,9 @@ class Controller {
       Json lo = {nullptr, nullptr, nullptr}, hi = {nullptr, nullptr, nullptr};
       lo[axis] = at - 0.3 * spacing;
       hi[axis] = at + 0.3 * spacing;
-      ops.push_back(MakeOp("EdgeLoopAffineScale",
-                           {{"verts", {{"box", {lo, hi}}, {"expect", 4}}}, {"scale", {1.0, 1.0, 1.0}}}));
+      Json verts = {{"box", {lo, hi}}};
+      if (expect > 0) verts["expect"] = expect;
+      ops.push_back(MakeOp("EdgeLoopAffineScale", {{"verts", verts}, {"scale", {1.0, 1.0, 1.0}}}));
     }
     return ops;
   }
@@ -237,9 +243,9 @@ class Controller {
     const int axis = LongAxis();
     for (int cuts : {2, 4, 8}) {
       best = Consider("profile", best, [&](Layout* l) -> std::string {
-        const int loops_now = static_cast<int>(l->cube_frame.size()) - 1;
+        const int loops_now = static_cast<int>(l->profile.size()) - 1;
         if (loops_now >= cuts) return "";
-        l->cube_frame = ProfileOps(axis, cuts);
+        l->profile = LoopOps(axis, cuts, 4);
         return "LoopCut " + std::string(kAxisNames[axis]) + " x" + std::to_string(cuts) + " + " +
                std::to_string(cuts) + " EdgeLoopAffineScale";
       });
@@ -254,10 +260,18 @@ class Controller {
       int axis;
       Json params;
     };
+    // Starts on both sides of the identity, and a large twist (LM does not cross the twist
+    // of a square section by a quarter turn from a small start).
     std::vector<Deform> deforms = {{"SimpleDeformTwist", axis, {{"angle_deg", 30.0}}},
-                                   {"SimpleDeformTaper", axis, {{"factor", 0.2}}}};
+                                   {"SimpleDeformTwist", axis, {{"angle_deg", -30.0}}},
+                                   {"SimpleDeformTwist", axis, {{"angle_deg", 150.0}}},
+                                   {"SimpleDeformTwist", axis, {{"angle_deg", -150.0}}},
+                                   {"SimpleDeformTaper", axis, {{"factor", 0.2}}},
+                                   {"SimpleDeformTaper", axis, {{"factor", -0.2}}}};
     for (int a = 0; a < 3; ++a) {
-      if (a != axis) deforms.push_back({"SimpleDeformBend", a, {{"angle_deg", 30.0}}});
+      if (a == axis) continue;
+      deforms.push_back({"SimpleDeformBend", a, {{"angle_deg", 30.0}}});
+      deforms.push_back({"SimpleDeformBend", a, {{"angle_deg", -30.0}}});
     }
     for (const Deform& deform : deforms) {
       best = Consider("deform", best, [&](Layout* l) -> std::string {
@@ -269,12 +283,47 @@ class Controller {
         l->deforms.push_back(MakeOp(deform.op, params));
         std::string what = "+" + deform.op + " " + kAxisNames[deform.axis];
         // Deformations need rings along the long axis to bend smoothly.
-        if (l->cube_frame.empty()) {
-          l->cube_frame = {MakeOp("LoopCut", {{"axis", kAxisNames[axis]}, {"cuts", 7}, {"near", {0, 0, 0}}})};
+        if (l->profile.empty()) {
+          l->profile = {MakeOp("LoopCut", {{"axis", kAxisNames[axis]}, {"cuts", 7}, {"near", {0, 0, 0}}})};
           what += " (with LoopCut " + std::string(kAxisNames[axis]) + " x7)";
         }
         return what;
       });
+    }
+    return best;
+  }
+
+  Trial RepeatDetails(Trial best) {
+    for (int round = 0; round < 6 && InBudget(); ++round) {
+      const double before = best.loss;
+      best = StageDetails(best);
+      if (!(best.loss < before)) break;
+    }
+    return best;
+  }
+
+  // Loop cuts across two axes give faces where extrusions can start (legs at a table's
+  // corners, arms in the middle of a side). Cuts alone do not change the surface, so each grid
+  // is judged with the extrusions it enables (one step of lookahead).
+  Trial StageGrid(Trial best) {
+    if (!best.layout.grid.empty()) return best;
+    for (int a = 0; a < 3 && InBudget(); ++a) {
+      for (int b = a + 1; b < 3 && InBudget(); ++b) {
+        Layout layout = best.layout;
+        // Loop scales let the new faces move to where the extrusions belong (a leg at a corner).
+        layout.grid = LoopOps(a, 2, layout.profile.empty() ? 4 : -1);
+        const std::vector<Json> second = LoopOps(b, 2, -1);
+        layout.grid.insert(layout.grid.end(), second.begin(), second.end());
+        Trial trial = Fit(layout, search_options_);
+        if (!trial.ok) continue;
+        const std::string what = std::string("LoopCut grid ") + kAxisNames[a] + kAxisNames[b];
+        Log("grid", best, trial, false, what + " (before its extrusions)");
+        trial = RepeatDetails(trial);
+        const int added = trial.layout.NumOps() - best.layout.NumOps();
+        const bool accept = trial.loss < best.loss * std::pow(1.0 - options_.min_relative_gain, added);
+        Log("grid", best, trial, accept, what + " with its extrusions");
+        if (accept) best = trial;
+      }
     }
     return best;
   }
@@ -300,6 +349,9 @@ class Controller {
     const double diagonal = 2.0 * half_extent_.norm();
     const double threshold = 0.04 * diagonal;
     std::vector<std::vector<double>> outside(num_faces), inside(num_faces);
+    // Mean squared distance of the outside samples from the face's normal line: a narrow
+    // protrusion starts from a narrowed cap (the Extrude's width).
+    std::vector<double> outside_spread(num_faces, 0.0);
     const Positions<double>& points = target_.points();
     const size_t stride = std::max<size_t>(1, points.size() / 4000);
     for (size_t i = 0; i < points.size(); i += stride) {
@@ -311,7 +363,10 @@ class Controller {
         if (d < nearest_distance) nearest_distance = d, nearest = f;
       }
       const double along = (q - centroids[nearest]).dot(normals[nearest]);
-      if (along > threshold) outside[nearest].push_back(along);
+      if (along > threshold) {
+        outside[nearest].push_back(along);
+        outside_spread[nearest] += ((q - centroids[nearest]) - along * normals[nearest]).squaredNorm();
+      }
       if (along < -threshold) inside[nearest].push_back(-along);
     }
     const size_t min_support = std::max<size_t>(5, points.size() / stride / 100);
@@ -319,6 +374,7 @@ class Controller {
       int face;
       double height;  // signed
       size_t support;
+      double width = 1;
     };
     std::vector<Candidate> candidates;
     for (int f = 0; f < num_faces; ++f) {
@@ -326,24 +382,58 @@ class Controller {
         std::vector<double>& d = sign > 0 ? outside[f] : inside[f];
         if (d.size() < min_support) continue;
         std::nth_element(d.begin(), d.begin() + d.size() * 3 / 4, d.end());
-        candidates.push_back({f, sign * d[d.size() * 3 / 4], d.size()});
+        Candidate candidate{f, sign * d[d.size() * 3 / 4], d.size()};
+        if (sign > 0) {
+          // Uniform samples over a square of side L lie sqrt(1/6) L from its centre (RMS).
+          const double face_spread = std::sqrt(FaceAreaNormal(cage.vertices, cage.faces[f]).norm() / 6.0);
+          const double spread = std::sqrt(outside_spread[f] / static_cast<double>(d.size()));
+          candidate.width = std::clamp(spread / std::max(face_spread, 1e-12), 0.1, 1.0);
+        }
+        candidates.push_back(candidate);
       }
     }
     std::sort(candidates.begin(), candidates.end(), [](const Candidate& a, const Candidate& b) {
       return a.support * std::abs(a.height) > b.support * std::abs(b.height);
     });
-    if (candidates.size() > 3) candidates.resize(3);
-    for (const Candidate& c : candidates) {
+    // Faces wanting the same growth (a table's four legs, a cross's arms) are proposed
+    // together, as one Extrude on all of them, before the single faces.
+    std::vector<std::vector<Candidate>> proposals;
+    std::vector<bool> grouped(candidates.size(), false);
+    for (size_t i = 0; i < candidates.size(); ++i) {
+      std::vector<Candidate> group = {candidates[i]};
+      for (size_t j = i + 1; j < candidates.size(); ++j) {
+        const Candidate& a = candidates[i];
+        const Candidate& b = candidates[j];
+        if (grouped[j] || (a.height > 0) != (b.height > 0)) continue;
+        const bool similar_height = std::abs(a.height - b.height) < 0.3 * std::abs(a.height);
+        const bool same_direction = normals[a.face].dot(normals[b.face]) > 0.9;
+        // Symmetric growth on opposite or perpendicular sides counts as a pattern too.
+        const bool same_size = std::abs(static_cast<double>(b.support) - static_cast<double>(a.support)) < 0.5 * a.support;
+        if (similar_height && (same_direction || same_size)) group.push_back(b), grouped[j] = true;
+      }
+      if (group.size() > 1) proposals.push_back(group);
+    }
+    for (size_t i = 0; i < candidates.size() && i < 6; ++i) proposals.push_back({candidates[i]});
+    for (const std::vector<Candidate>& group : proposals) {
       best = Consider("detail", best, [&](Layout* l) -> std::string {
-        const Json faces = {{"centers", {ToJson(centroids[c.face])}}, {"expect", 1}};
-        if (c.height > 0) {
-          l->details.push_back(MakeOp("Extrude", {{"faces", faces}, {"height", c.height}, {"mode", "individual"}}));
-          return "+Extrude out " + std::to_string(c.height);
+        Json centers = Json::array();
+        double height = 0, width = 0;
+        for (const Candidate& c : group) {
+          centers.push_back(ToJson(centroids[c.face]));
+          height += c.height / static_cast<double>(group.size());
+          width += c.width / static_cast<double>(group.size());
         }
-        // A cavity: inset the face, then push the inner face in.
+        const Json faces = {{"centers", centers}, {"expect", group.size()}};
+        const std::string count = group.size() > 1 ? " x" + std::to_string(group.size()) : "";
+        if (height > 0) {
+          l->details.push_back(
+              MakeOp("Extrude", {{"faces", faces}, {"height", height}, {"width", width}, {"mode", "individual"}}));
+          return "+Extrude out" + count + " " + std::to_string(height) + " width " + std::to_string(width);
+        }
+        // A cavity: inset the faces, then push the inner faces in.
         l->details.push_back(MakeOp("Inset", {{"faces", faces}, {"thickness", 0.1 * half_extent_.minCoeff()}}));
-        l->details.push_back(MakeOp("Extrude", {{"faces", faces}, {"height", c.height}, {"mode", "region"}}));
-        return "+Inset +Extrude in " + std::to_string(c.height);
+        l->details.push_back(MakeOp("Extrude", {{"faces", faces}, {"height", height}, {"mode", "individual"}}));
+        return "+Inset +Extrude in" + count + " " + std::to_string(height);
       });
     }
     return best;
