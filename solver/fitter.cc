@@ -333,6 +333,7 @@ double Fitter::RunStage(double sparsity_weight, FitSummary* summary) {
     program_->PrepareForEvaluation(false, true);
     std::vector<double> r, j;
     const double fresh = EvaluateObjective(*program_, objective, nullptr, &r, &j);
+    summary->history.push_back({Now() - start_time_, summary->inner_iterations, fresh});
     const bool improving = fresh < best * (1 - options_.min_relative_improvement);
     if (fresh < best) {
       best = fresh;
@@ -342,7 +343,6 @@ double Fitter::RunStage(double sparsity_weight, FitSummary* summary) {
     const int iterations_before = summary->inner_iterations;
     const double solved = Solve(correspondences, sparsity_weight, summary);
     ++summary->outer_iterations;
-    summary->history.emplace_back(Now() - start_time_, solved);
     if (options_.progress) {
       char line[200];
       std::snprintf(line, sizeof(line), "fit: update %d: loss %.4e -> %.4e (%d %s, %.2f s)%s\n", update, fresh, solved,
@@ -405,7 +405,6 @@ FitSummary Fitter::Fit() {
   start_time_ = Now();
   const int jacobians_before = program_->num_jacobian_evaluations();
   summary.initial_loss = CurrentLoss();
-  summary.history.emplace_back(0.0, summary.initial_loss);
   int jacobians = 0;
   if (options_.fit_gates) {
     // Stage 1: parameters with the gates held; stage 2: gates under the sparsity weight with
@@ -427,6 +426,7 @@ FitSummary Fitter::Fit() {
   }
   sparsity_weight_ = 0;
   summary.final_loss = CurrentLoss();
+  summary.history.push_back({Now() - start_time_, summary.inner_iterations, summary.final_loss});
   summary.jacobian_evaluations = jacobians;
   summary.seconds = Now() - start_time_;
   return summary;
