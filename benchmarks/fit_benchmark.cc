@@ -93,7 +93,7 @@ void CompareOptimizers(const fs::path& root) {
 void JacobianThroughput() {
   const char* document = R"({"operations": [
     {"op": "GlobalAffineScale", "params": {"scale": [0.7, 0.9, 1.6]}},
-    {"op": "LoopCut", "params": {"axis": "Z", "cuts": 3, "near": [0.7, 0.9, 0]}},
+    {"op": "LoopCut", "params": {"axis": "Z", "cuts": 5, "near": [0.7, 0.9, 0]}},
     {"op": "Extrude", "params": {"faces": {"normal": [0, 0, 1], "expect": 1}, "height": 0.5, "width": 0.6}},
     {"op": "SimpleDeformTwist", "params": {"axis": "Z", "angle_deg": 50}},
     {"op": "SimpleDeformBend", "params": {"axis": "X", "angle_deg": 30}},
