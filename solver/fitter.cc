@@ -299,6 +299,23 @@ double Fitter::Solve(const Correspondences& correspondences, double sparsity_wei
   return EvaluateObjective(*program_, objective, nullptr, &r, &jac);
 }
 
+bool Fitter::ReproducesProgram() const {
+  try {
+    Sequence copy = ParseSequence(SequenceToJson(*sequence_));
+    for (size_t k = 0; k < copy.ops.size(); ++k) copy.gates[k] = program_->Gate(static_cast<int>(k));
+    const std::vector<Mesh> steps = EvaluateSequence(&copy);
+    const Mesh& result = steps.empty() ? copy.StartMesh() : steps.back();
+    if (result.faces != program_->faces() || result.vertices.size() != program_->positions().size()) return false;
+    const double tolerance = 1e-9 / target_.scale();
+    for (size_t v = 0; v < result.vertices.size(); ++v) {
+      if (!((result.vertices[v] - program_->positions()[v]).norm() <= tolerance)) return false;
+    }
+    return true;
+  } catch (const std::exception&) {
+    return false;
+  }
+}
+
 double Fitter::RunStage(double sparsity_weight, FitSummary* summary) {
   sparsity_weight_ = sparsity_weight;
   const std::vector<ProgramBlock>& blocks = program_->blocks();
@@ -319,8 +336,8 @@ double Fitter::RunStage(double sparsity_weight, FitSummary* summary) {
     const std::vector<ParamSpec>& specs = sequence_->ops[b.op]->specs();
     for (int i = 0; i < b.size; ++i) b.data[i] = std::min(specs[i].upper, std::max(specs[i].lower, b.data[i]));
   }
-  double best = std::numeric_limits<double>::infinity();
-  std::vector<double> best_values = snapshot();
+  double best = std::numeric_limits<double>::infinity(), best_reproducible = best;
+  std::vector<double> best_values = snapshot(), best_reproducible_values;
   for (int update = 0; update < options_.max_outer_iterations; ++update) {
     const double started = Now();
     Correspondences correspondences;
@@ -338,6 +355,13 @@ double Fitter::RunStage(double sparsity_weight, FitSummary* summary) {
     if (fresh < best) {
       best = fresh;
       best_values = snapshot();
+      // The result must be a sequence that, as written, rebuilds the fitted mesh (its
+      // geometric targets resolve to the same elements); the path there may pass through
+      // parameters where they do not (e.g. from a start where they do not).
+      if (fresh < best_reproducible && ReproducesProgram()) {
+        best_reproducible = fresh;
+        best_reproducible_values = best_values;
+      }
     }
     if (!improving) break;
     const int iterations_before = summary->inner_iterations;
@@ -351,6 +375,14 @@ double Fitter::RunStage(double sparsity_weight, FitSummary* summary) {
                     sparsity_weight > 0 ? " [gate sparsity]" : "");
       *options_.progress << line << std::flush;
     }
+  }
+  if (best_reproducible > best && !best_reproducible_values.empty()) {
+    if (options_.progress) {
+      *options_.progress << "fit: the best parameters (loss " << best << ") would change what the sequence's targets "
+                         << "select; keeping the best that do not (loss " << best_reproducible << ")\n";
+    }
+    best = best_reproducible;
+    best_values = best_reproducible_values;
   }
   restore(best_values);
   program_->PrepareForEvaluation(false, true);

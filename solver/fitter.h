@@ -9,6 +9,9 @@
 // g (p - identity), which is each op's gate blend) and set to 1, and a last solve polishes
 // the parameters with gates fixed, so the result is exportable to Blender.
 //
+// The result is the best parameter set at which the sequence, as written, rebuilds the fitted
+// mesh (geometric targets such as face boxes resolve to the same elements), when there is one.
+//
 // Deterministic for a given seed (single-threaded residual evaluation by default).
 #pragma once
 
@@ -95,6 +98,9 @@ class Fitter {
   double RunStage(double sparsity_weight, FitSummary* summary);
   double Solve(const Correspondences& correspondences, double sparsity_weight, FitSummary* summary);
   void Finalise(FitSummary* summary);
+  // Whether the sequence as it would be written (re-parsed, targets re-resolved) rebuilds the
+  // program's current output.
+  bool ReproducesProgram() const;
 
   const Target& target_;
   Sequence* sequence_;
