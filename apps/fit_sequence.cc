@@ -1,9 +1,10 @@
 // fit_sequence --input TARGET --init SEQ.json --out DIR [--seed N] [--optimizer ceres|adam]
-//              [--fit-gates] [--samples N] [--threads N] [--quiet]
+//              [--fit-gates] [--loss none|huber|cauchy] [--samples N] [--threads N] [--quiet]
 // Fits every continuous parameter of the sequence skeleton SEQ.json (ops and discrete choices
 // fixed; its parameters are the start) to TARGET (a mesh or point cloud, any format
 // io/read_input reads), then writes DIR/sequence.json (fitted), DIR/result.obj (in the input's
 // frame and units), DIR/rebuild_blender.py and DIR/metrics.json. Progress lines on stdout.
+// --loss: a robust loss (scale 0.02 of the target's unit box) against outliers in the target.
 // Bad input: one line on stderr naming the problem, exit code 2, and nothing written.
 #include <cmath>
 #include <cstdlib>
@@ -20,7 +21,7 @@ namespace {
 
 constexpr const char* kUsage =
     "usage: fit_sequence --input TARGET --init SEQ.json --out DIR [--seed N] [--optimizer ceres|adam] "
-    "[--fit-gates] [--samples N] [--threads N] [--quiet]";
+    "[--fit-gates] [--loss none|huber|cauchy] [--samples N] [--threads N] [--quiet]";
 
 // A whole-string non-negative integer in [lower, upper], else false.
 bool ParseInteger(const std::string& text, long long lower, long long upper, long long* value) {
@@ -67,6 +68,17 @@ int main(int argc, char** argv) {
         options.optimizer = Optimizer::kAdam;
       } else {
         return fail("--optimizer: expected 'ceres' or 'adam'");
+      }
+    } else if (arg == "--loss" && has_value) {
+      const std::string name = argv[++i];
+      if (name == "none") {
+        options.loss = RobustLoss::kNone;
+      } else if (name == "huber") {
+        options.loss = RobustLoss::kHuber;
+      } else if (name == "cauchy") {
+        options.loss = RobustLoss::kCauchy;
+      } else {
+        return fail("--loss: expected 'none', 'huber' or 'cauchy'");
       }
     } else if (arg == "--fit-gates") {
       options.fit_gates = true;

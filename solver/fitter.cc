@@ -124,14 +124,15 @@ void Fitter::BuildCorrespondences(uint64_t seed, Correspondences* out) {
 
 namespace {
 
-void BuildObjective(const Program& program, const Sequence& sequence, const FitterOptions& options,
+void BuildObjective(const Program& program, const Sequence& sequence, const FitterOptions& options, double unit_scale,
                     const std::vector<SurfaceCorrespondence>& forward, double forward_weight,
                     const std::vector<SurfaceCorrespondence>& backward, double backward_weight,
                     const double* sparsity_weight, Objective* objective) {
   const std::vector<double*> all_blocks = program.BlockPointers();
   auto add_terms = [&](const std::vector<SurfaceCorrespondence>& list, double weight) {
-    // The robust loss acts on the residual, so its scale carries the residual's weight.
-    objective->losses.push_back(MakeLoss(options.loss, options.loss_scale * weight));
+    // The robust loss acts on the residual weight * (p - q) = sqrt(w / N) * (distance in the
+    // unit box), so its scale (unit-box units) is multiplied by sqrt(w / N) = weight / unit_scale.
+    objective->losses.push_back(MakeLoss(options.loss, options.loss_scale * weight / unit_scale));
     const ceres::LossFunction* loss = objective->losses.back().get();
     for (const SurfaceCorrespondence& c : list) {
       objective->terms.push_back(
@@ -206,7 +207,7 @@ double Fitter::CurrentLoss() {
   Correspondences correspondences;
   BuildCorrespondences(options_.seed, &correspondences);
   Objective objective;
-  BuildObjective(*program_, *sequence_, options_, correspondences.output_to_target,
+  BuildObjective(*program_, *sequence_, options_, target_.scale(), correspondences.output_to_target,
                  correspondences.output_to_target_weight, correspondences.target_to_output,
                  correspondences.target_to_output_weight, &sparsity_weight_, &objective);
   program_->PrepareForEvaluation(false, true);
@@ -217,7 +218,7 @@ double Fitter::CurrentLoss() {
 double Fitter::Solve(const Correspondences& correspondences, double sparsity_weight, FitSummary* summary) {
   sparsity_weight_ = sparsity_weight;
   Objective objective;
-  BuildObjective(*program_, *sequence_, options_, correspondences.output_to_target,
+  BuildObjective(*program_, *sequence_, options_, target_.scale(), correspondences.output_to_target,
                  correspondences.output_to_target_weight, correspondences.target_to_output,
                  correspondences.target_to_output_weight, &sparsity_weight_, &objective);
   const std::vector<ProgramBlock>& blocks = program_->blocks();
@@ -344,7 +345,7 @@ double Fitter::RunStage(double sparsity_weight, FitSummary* summary) {
     // The same seed every update: samples move smoothly with the shape, so losses compare.
     BuildCorrespondences(options_.seed, &correspondences);
     Objective objective;
-    BuildObjective(*program_, *sequence_, options_, correspondences.output_to_target,
+    BuildObjective(*program_, *sequence_, options_, target_.scale(), correspondences.output_to_target,
                    correspondences.output_to_target_weight, correspondences.target_to_output,
                    correspondences.target_to_output_weight, &sparsity_weight_, &objective);
     program_->PrepareForEvaluation(false, true);

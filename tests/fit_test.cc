@@ -11,6 +11,7 @@
 #include <random>
 
 #include "core/metrics.h"
+#include "core/nearest.h"
 #include "solver/fitter.h"
 #include "tests/gt_convert.h"
 #include "tests/perturb.h"
@@ -185,6 +186,97 @@ TEST(Fit, DecoyOpIsPruned) {
     const ShapeMetrics metrics = ComputeShapeMetrics(fitted, target_mesh, metrics_options);
     EXPECT_LT(metrics.chamfer.Sum(), 2 * SamplingNoiseFloor(target_mesh, metrics_options)) << decoy.name;
   }
+}
+
+}  // namespace
+}  // namespace opgraph
+
+namespace opgraph {
+namespace {
+
+const char* kTwistedBox = R"({"operations": [
+  {"op": "GlobalAffineScale", "params": {"scale": [0.6, 0.8, 1.8]}},
+  {"op": "LoopCut", "params": {"axis": "Z", "cuts": 6, "near": [0.6, 0.8, 0]}},
+  {"op": "SimpleDeformTwist", "params": {"axis": "Z", "angle_deg": 70}}]})";
+
+Mesh TwistedBox() {
+  Sequence truth = ParseSequence(Json::parse(kTwistedBox));
+  return EvaluateSequence(&truth).back();
+}
+
+// Fits the perturbed twisted box to `target`; returns the fitted sequence's JSON.
+Json FitTwistedBox(const Target& target, const FitterOptions& options, FitSummary* summary = nullptr) {
+  Sequence sequence = ParseSequence(Json::parse(kTwistedBox));
+  Fitter fitter(target, &sequence, options);
+  PerturbParameters(fitter.program(), sequence, 5);
+  const FitSummary s = fitter.Fit();
+  if (summary) *summary = s;
+  return SequenceToJson(sequence);
+}
+
+Mesh Evaluate(const Json& document) {
+  Sequence sequence = ParseSequence(document);
+  return EvaluateSequence(&sequence).back();
+}
+
+TEST(Fit, DeterministicForASeed) {
+  const Target target(TwistedBox(), {}, TargetOptions());
+  FitSummary a, b;
+  const Json first = FitTwistedBox(target, TestOptions(), &a);
+  const Json second = FitTwistedBox(target, TestOptions(), &b);
+  EXPECT_EQ(first.dump(), second.dump());
+  EXPECT_EQ(a.final_loss, b.final_loss);
+  EXPECT_EQ(a.inner_iterations, b.inner_iterations);
+}
+
+// A point-cloud target (no faces, normals estimated) and, with outliers, a robust loss.
+TEST(Fit, PointCloudTargetsAndRobustLoss) {
+  const Mesh truth = TwistedBox();
+  const SurfaceSamples samples = SampleSurface(truth.vertices, FanTriangulate(truth.faces), 6000, 9);
+  Mesh cloud;
+  cloud.vertices = samples.points;
+  MetricsOptions metrics_options;
+  metrics_options.num_samples = 5000;
+  const double floor = SamplingNoiseFloor(truth, metrics_options);
+  {
+    const Target target(cloud, {}, TargetOptions());
+    const double chamfer = ComputeShapeMetrics(Evaluate(FitTwistedBox(target, TestOptions())), truth, metrics_options).chamfer.Sum();
+    std::printf("[cloud] clean cloud: Chamfer to the true surface %.2e (floor %.2e)\n", chamfer, floor);
+    EXPECT_LT(chamfer, 0.1 * floor);
+  }
+  // 10 % outliers, uniform in the box grown by half its size.
+  std::mt19937_64 rng(4);
+  Eigen::AlignedBox3d box;
+  for (const Vec3d& v : truth.vertices) box.extend(v);
+  for (int i = 0; i < 600; ++i) {
+    const Vec3d u(UnitRandom(rng()), UnitRandom(rng()), UnitRandom(rng()));
+    cloud.vertices.push_back(box.min() - 0.25 * box.sizes() + u.cwiseProduct(1.5 * box.sizes()));
+  }
+  const Target noisy(cloud, {}, TargetOptions());
+  FitterOptions plain = TestOptions(), robust = TestOptions();
+  robust.loss = RobustLoss::kCauchy;
+  robust.loss_scale = 0.01;
+  const double plain_chamfer = ComputeShapeMetrics(Evaluate(FitTwistedBox(noisy, plain)), truth, metrics_options).chamfer.Sum();
+  const double robust_chamfer = ComputeShapeMetrics(Evaluate(FitTwistedBox(noisy, robust)), truth, metrics_options).chamfer.Sum();
+  std::printf("[cloud] 10 %% outliers: Chamfer to the true surface %.2e (squared loss), %.2e (Cauchy)\n", plain_chamfer,
+              robust_chamfer);
+  EXPECT_LT(robust_chamfer, 0.5 * plain_chamfer);
+  EXPECT_LT(robust_chamfer, 0.2 * floor);
+}
+
+TEST(Fit, DomainRuleBoundsAParameter) {
+  const Target target(TwistedBox(), {}, TargetOptions());
+  FitterOptions options = TestOptions();
+  const Json free = FitTwistedBox(target, options);
+  options.domain_rules.push_back({/*op=*/2, /*param=*/0, /*lower=*/-0.5, /*upper=*/0.5, /*weight=*/10.0});
+  const Json ruled = FitTwistedBox(target, options);
+  const double free_angle = free["operations"][2]["params"]["angle_deg"].get<double>();
+  const double ruled_angle = ruled["operations"][2]["params"]["angle_deg"].get<double>();
+  std::printf("[rule] twist %.3f deg free, %.3f deg with the rule |angle| <= 0.5 rad (%.3f deg)\n", free_angle,
+              ruled_angle, RadToDeg(0.5));
+  EXPECT_NEAR(free_angle, 70.0, 1e-4);
+  EXPECT_LT(ruled_angle, RadToDeg(0.5) + 3.0);
+  EXPECT_GT(ruled_angle, 0.0);
 }
 
 }  // namespace
