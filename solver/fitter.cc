@@ -124,14 +124,15 @@ void Fitter::BuildCorrespondences(uint64_t seed, Correspondences* out) {
 
 namespace {
 
-void BuildObjective(const Program& program, const Sequence& sequence, const FitterOptions& options,
+void BuildObjective(const Program& program, const Sequence& sequence, const FitterOptions& options, double unit_scale,
                     const std::vector<SurfaceCorrespondence>& forward, double forward_weight,
                     const std::vector<SurfaceCorrespondence>& backward, double backward_weight,
                     const double* sparsity_weight, Objective* objective) {
   const std::vector<double*> all_blocks = program.BlockPointers();
   auto add_terms = [&](const std::vector<SurfaceCorrespondence>& list, double weight) {
-    // The robust loss acts on the residual, so its scale carries the residual's weight.
-    objective->losses.push_back(MakeLoss(options.loss, options.loss_scale * weight));
+    // The robust loss acts on the residual weight * (p - q) = sqrt(w / N) * (distance in the
+    // unit box), so its scale (unit-box units) is multiplied by sqrt(w / N) = weight / unit_scale.
+    objective->losses.push_back(MakeLoss(options.loss, options.loss_scale * weight / unit_scale));
     const ceres::LossFunction* loss = objective->losses.back().get();
     for (const SurfaceCorrespondence& c : list) {
       objective->terms.push_back(
@@ -206,7 +207,7 @@ double Fitter::CurrentLoss() {
   Correspondences correspondences;
   BuildCorrespondences(options_.seed, &correspondences);
   Objective objective;
-  BuildObjective(*program_, *sequence_, options_, correspondences.output_to_target,
+  BuildObjective(*program_, *sequence_, options_, target_.scale(), correspondences.output_to_target,
                  correspondences.output_to_target_weight, correspondences.target_to_output,
                  correspondences.target_to_output_weight, &sparsity_weight_, &objective);
   program_->PrepareForEvaluation(false, true);
@@ -217,7 +218,7 @@ double Fitter::CurrentLoss() {
 double Fitter::Solve(const Correspondences& correspondences, double sparsity_weight, FitSummary* summary) {
   sparsity_weight_ = sparsity_weight;
   Objective objective;
-  BuildObjective(*program_, *sequence_, options_, correspondences.output_to_target,
+  BuildObjective(*program_, *sequence_, options_, target_.scale(), correspondences.output_to_target,
                  correspondences.output_to_target_weight, correspondences.target_to_output,
                  correspondences.target_to_output_weight, &sparsity_weight_, &objective);
   const std::vector<ProgramBlock>& blocks = program_->blocks();
@@ -299,6 +300,23 @@ double Fitter::Solve(const Correspondences& correspondences, double sparsity_wei
   return EvaluateObjective(*program_, objective, nullptr, &r, &jac);
 }
 
+bool Fitter::ReproducesProgram() const {
+  try {
+    Sequence copy = ParseSequence(SequenceToJson(*sequence_));
+    for (size_t k = 0; k < copy.ops.size(); ++k) copy.gates[k] = program_->Gate(static_cast<int>(k));
+    const std::vector<Mesh> steps = EvaluateSequence(&copy);
+    const Mesh& result = steps.empty() ? copy.StartMesh() : steps.back();
+    if (result.faces != program_->faces() || result.vertices.size() != program_->positions().size()) return false;
+    const double tolerance = 1e-9 / target_.scale();
+    for (size_t v = 0; v < result.vertices.size(); ++v) {
+      if (!((result.vertices[v] - program_->positions()[v]).norm() <= tolerance)) return false;
+    }
+    return true;
+  } catch (const std::exception&) {
+    return false;
+  }
+}
+
 double Fitter::RunStage(double sparsity_weight, FitSummary* summary) {
   sparsity_weight_ = sparsity_weight;
   const std::vector<ProgramBlock>& blocks = program_->blocks();
@@ -319,30 +337,37 @@ double Fitter::RunStage(double sparsity_weight, FitSummary* summary) {
     const std::vector<ParamSpec>& specs = sequence_->ops[b.op]->specs();
     for (int i = 0; i < b.size; ++i) b.data[i] = std::min(specs[i].upper, std::max(specs[i].lower, b.data[i]));
   }
-  double best = std::numeric_limits<double>::infinity();
-  std::vector<double> best_values = snapshot();
+  double best = std::numeric_limits<double>::infinity(), best_reproducible = best;
+  std::vector<double> best_values = snapshot(), best_reproducible_values;
   for (int update = 0; update < options_.max_outer_iterations; ++update) {
     const double started = Now();
     Correspondences correspondences;
     // The same seed every update: samples move smoothly with the shape, so losses compare.
     BuildCorrespondences(options_.seed, &correspondences);
     Objective objective;
-    BuildObjective(*program_, *sequence_, options_, correspondences.output_to_target,
+    BuildObjective(*program_, *sequence_, options_, target_.scale(), correspondences.output_to_target,
                    correspondences.output_to_target_weight, correspondences.target_to_output,
                    correspondences.target_to_output_weight, &sparsity_weight_, &objective);
     program_->PrepareForEvaluation(false, true);
     std::vector<double> r, j;
     const double fresh = EvaluateObjective(*program_, objective, nullptr, &r, &j);
+    summary->history.push_back({Now() - start_time_, summary->inner_iterations, fresh});
     const bool improving = fresh < best * (1 - options_.min_relative_improvement);
     if (fresh < best) {
       best = fresh;
       best_values = snapshot();
+      // The result must be a sequence that, as written, rebuilds the fitted mesh (its
+      // geometric targets resolve to the same elements); the path there may pass through
+      // parameters where they do not (e.g. from a start where they do not).
+      if (fresh < best_reproducible && ReproducesProgram()) {
+        best_reproducible = fresh;
+        best_reproducible_values = best_values;
+      }
     }
     if (!improving) break;
     const int iterations_before = summary->inner_iterations;
     const double solved = Solve(correspondences, sparsity_weight, summary);
     ++summary->outer_iterations;
-    summary->history.emplace_back(Now() - start_time_, solved);
     if (options_.progress) {
       char line[200];
       std::snprintf(line, sizeof(line), "fit: update %d: loss %.4e -> %.4e (%d %s, %.2f s)%s\n", update, fresh, solved,
@@ -351,6 +376,14 @@ double Fitter::RunStage(double sparsity_weight, FitSummary* summary) {
                     sparsity_weight > 0 ? " [gate sparsity]" : "");
       *options_.progress << line << std::flush;
     }
+  }
+  if (best_reproducible > best && !best_reproducible_values.empty()) {
+    if (options_.progress) {
+      *options_.progress << "fit: the best parameters (loss " << best << ") would change what the sequence's targets "
+                         << "select; keeping the best that do not (loss " << best_reproducible << ")\n";
+    }
+    best = best_reproducible;
+    best_values = best_reproducible_values;
   }
   restore(best_values);
   program_->PrepareForEvaluation(false, true);
@@ -405,7 +438,6 @@ FitSummary Fitter::Fit() {
   start_time_ = Now();
   const int jacobians_before = program_->num_jacobian_evaluations();
   summary.initial_loss = CurrentLoss();
-  summary.history.emplace_back(0.0, summary.initial_loss);
   int jacobians = 0;
   if (options_.fit_gates) {
     // Stage 1: parameters with the gates held; stage 2: gates under the sparsity weight with
@@ -427,6 +459,7 @@ FitSummary Fitter::Fit() {
   }
   sparsity_weight_ = 0;
   summary.final_loss = CurrentLoss();
+  summary.history.push_back({Now() - start_time_, summary.inner_iterations, summary.final_loss});
   summary.jacobian_evaluations = jacobians;
   summary.seconds = Now() - start_time_;
   return summary;

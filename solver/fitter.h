@@ -9,6 +9,9 @@
 // g (p - identity), which is each op's gate blend) and set to 1, and a last solve polishes
 // the parameters with gates fixed, so the result is exportable to Blender.
 //
+// The result is the best parameter set at which the sequence, as written, rebuilds the fitted
+// mesh (geometric targets such as face boxes resolve to the same elements), when there is one.
+//
 // Deterministic for a given seed (single-threaded residual evaluation by default).
 #pragma once
 
@@ -39,8 +42,8 @@ struct FitterOptions {
   bool fit_gates = false;
   double gate_sparsity_weight = 1e-4;  // stage 2 weight of sum(g^2) / 2 (data loss: unit box)
   double prune_gate = 0.5;
-  int max_outer_iterations = 15;    // correspondence updates per stage
-  int max_inner_iterations = 25;    // LM iterations per solve
+  int max_outer_iterations = 40;    // correspondence updates per stage (stops earlier on stagnation)
+  int max_inner_iterations = 5;     // LM iterations per solve (short: correspondences go stale)
   int adam_iterations = 150;        // Adam steps per solve
   double adam_learning_rate = 0.01;
   double min_relative_improvement = 1e-3;  // outer loop stops below this
@@ -61,8 +64,14 @@ struct FitSummary {
   double seconds = 0;
   std::vector<double> gates_before_finalisation;  // per op of the input sequence
   std::vector<int> pruned_ops;                    // indices in the input sequence
-  // (seconds since start, data loss) after every solve, for convergence comparisons.
-  std::vector<std::pair<double, double>> history;
+  // The loss with fresh correspondences (a function of the parameters only, so comparable
+  // across optimizers) at each correspondence update and at the end.
+  struct Point {
+    double seconds;   // since Fit() started
+    int iterations;   // inner iterations so far
+    double loss;
+  };
+  std::vector<Point> history;
 };
 
 class Fitter {
@@ -89,6 +98,9 @@ class Fitter {
   double RunStage(double sparsity_weight, FitSummary* summary);
   double Solve(const Correspondences& correspondences, double sparsity_weight, FitSummary* summary);
   void Finalise(FitSummary* summary);
+  // Whether the sequence as it would be written (re-parsed, targets re-resolved) rebuilds the
+  // program's current output.
+  bool ReproducesProgram() const;
 
   const Target& target_;
   Sequence* sequence_;

@@ -27,21 +27,16 @@ Target::Target(Mesh shape, Positions<double> cloud_normals, const TargetOptions&
     tree_.reset(new PointTree(points_));
     return;
   }
-  points_ = shape_.vertices;
-  normals_ = cloud_normals;
-  if (static_cast<int>(points_.size()) > options.max_cloud_points) {
-    // Seeded subsample (partial Fisher-Yates on the indices).
-    std::vector<int> order(points_.size());
-    for (size_t i = 0; i < order.size(); ++i) order[i] = static_cast<int>(i);
-    std::mt19937_64 rng(options.seed);
-    for (int i = 0; i < options.max_cloud_points; ++i) std::swap(order[i], order[i + rng() % (order.size() - i)]);
-    Positions<double> points, normals;
-    for (int i = 0; i < options.max_cloud_points; ++i) {
-      points.push_back(points_[order[i]]);
-      if (!normals_.empty()) normals.push_back(normals_[order[i]]);
-    }
-    points_.swap(points);
-    normals_.swap(normals);
+  // A seeded random order (and subsample of large clouds), so any prefix of the points is a
+  // fair sample of the cloud (partial Fisher-Yates on the indices).
+  std::vector<int> order(shape_.vertices.size());
+  for (size_t i = 0; i < order.size(); ++i) order[i] = static_cast<int>(i);
+  std::mt19937_64 rng(options.seed);
+  const int kept = std::min<int>(options.max_cloud_points, static_cast<int>(order.size()));
+  for (int i = 0; i < kept; ++i) std::swap(order[i], order[i + rng() % (order.size() - i)]);
+  for (int i = 0; i < kept; ++i) {
+    points_.push_back(shape_.vertices[order[i]]);
+    if (cloud_normals.size() == shape_.vertices.size()) normals_.push_back(cloud_normals[order[i]]);
   }
   tree_.reset(new PointTree(points_));
   if (normals_.size() != points_.size()) normals_ = EstimatePointNormals(points_, options.normal_neighbours);

@@ -35,8 +35,9 @@ class Target {
   bool is_cloud() const { return shape_.faces.empty(); }
   const Vec3d& centre() const { return centre_; }
   double scale() const { return scale_; }
-  // #N samples and unit normals (input frame); for a mesh the normals are oriented outward as
-  // the faces' winding, for a cloud their sign is arbitrary unless given.
+  // #N samples and unit normals (input frame), in random order (so a prefix is a fair sample);
+  // for a mesh the normals are oriented outward as the faces' winding, for a cloud as given or
+  // estimated (io/read_input).
   const Positions<double>& points() const { return points_; }
   const Positions<double>& normals() const { return normals_; }
   const PointTree& tree() const { return *tree_; }
