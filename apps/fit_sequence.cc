@@ -1,9 +1,13 @@
-// fit_sequence --input TARGET --init SEQ.json --out DIR [--seed N] [--optimizer ceres|adam]
-//              [--fit-gates] [--loss none|huber|cauchy] [--samples N] [--threads N] [--quiet]
-// Fits every continuous parameter of the sequence skeleton SEQ.json (ops and discrete choices
-// fixed; its parameters are the start) to TARGET (a mesh or point cloud, any format
-// io/read_input reads), then writes DIR/sequence.json (fitted), DIR/result.obj (in the input's
-// frame and units), DIR/rebuild_blender.py and DIR/metrics.json. Progress lines on stdout.
+// fit_sequence --input TARGET --out DIR [--init SEQ.json] [--time-budget S] [--max-ops N]
+//              [--seed N] [--optimizer ceres|adam] [--fit-gates] [--loss none|huber|cauchy]
+//              [--samples N] [--threads N] [--quiet]
+// Without --init (the main job): recovers a design sequence for TARGET (a mesh or point cloud,
+// any format io/read_input reads) from scratch with the zero-shot controller
+// (solver/zero_shot.h). With --init: fits every continuous parameter of the sequence skeleton
+// SEQ.json (ops and discrete choices fixed; its parameters are the start).
+// Writes DIR/sequence.json, DIR/result.obj (in the input's frame and units),
+// DIR/steps/NN_<op>.obj, DIR/rebuild_blender.py, DIR/metrics.json and DIR/log.txt (the
+// controller's decisions). Progress lines on stdout.
 // --loss: a robust loss (scale 0.02 of the target's unit box) against outliers in the target.
 // Bad input: one line on stderr naming the problem, exit code 2, and nothing written.
 #include <cmath>
@@ -16,12 +20,13 @@
 #include "core/metrics.h"
 #include "core/obj_io.h"
 #include "solver/fitter.h"
+#include "solver/zero_shot.h"
 
 namespace {
 
 constexpr const char* kUsage =
-    "usage: fit_sequence --input TARGET --init SEQ.json --out DIR [--seed N] [--optimizer ceres|adam] "
-    "[--fit-gates] [--loss none|huber|cauchy] [--samples N] [--threads N] [--quiet]";
+    "usage: fit_sequence --input TARGET --out DIR [--init SEQ.json] [--time-budget S] [--max-ops N] [--seed N] "
+    "[--optimizer ceres|adam] [--fit-gates] [--loss none|huber|cauchy] [--samples N] [--threads N] [--quiet]";
 
 // A whole-string non-negative integer in [lower, upper], else false.
 bool ParseInteger(const std::string& text, long long lower, long long upper, long long* value) {
@@ -39,6 +44,7 @@ int main(int argc, char** argv) {
   std::string input_path, init_path, out_dir;
   FitterOptions options;
   TargetOptions target_options;
+  ZeroShotOptions zero_shot_options;
   bool quiet = false;
   auto fail = [](const std::string& message) {
     std::cerr << "fit_sequence: " << message << "\n";
@@ -89,25 +95,43 @@ int main(int argc, char** argv) {
     } else if (arg == "--threads" && has_value) {
       if (!ParseInteger(argv[++i], 1, 256, &number)) return fail("--threads: expected an integer in [1, 256]");
       options.num_threads = static_cast<int>(number);
+    } else if (arg == "--time-budget" && has_value) {
+      if (!ParseInteger(argv[++i], 1, 86400, &number)) return fail("--time-budget: expected seconds in [1, 86400]");
+      zero_shot_options.time_budget_seconds = static_cast<double>(number);
+    } else if (arg == "--max-ops" && has_value) {
+      if (!ParseInteger(argv[++i], 3, 1000, &number)) return fail("--max-ops: expected an integer in [3, 1000]");
+      zero_shot_options.max_ops = static_cast<int>(number);
     } else if (arg == "--quiet") {
       quiet = true;
     } else {
       return fail("unexpected argument '" + arg.substr(0, 80) + "'; " + kUsage);
     }
   }
-  if (input_path.empty() || init_path.empty() || out_dir.empty()) return fail(kUsage);
-  if (!quiet) options.progress = &std::cout;
+  if (input_path.empty() || out_dir.empty()) return fail(kUsage);
+  if (!quiet) options.progress = zero_shot_options.progress = &std::cout;
+  zero_shot_options.seed = options.seed;
+  zero_shot_options.num_threads = options.num_threads;
+  zero_shot_options.optimizer = options.optimizer;
+  const bool zero_shot = init_path.empty();
 
   // Everything is computed before anything is written.
   std::unique_ptr<Target> target;
   Sequence sequence;
   FitSummary summary;
+  ZeroShotResult recovered;
   SequenceOutputs outputs;
   try {
     target = LoadTarget(input_path, target_options);
-    sequence = LoadSequence(init_path);
-    Fitter fitter(*target, &sequence, options);
-    summary = fitter.Fit();
+    if (zero_shot) {
+      recovered = RecoverSequence(*target, zero_shot_options);
+      sequence = ParseSequence(recovered.sequence);
+      summary.final_loss = recovered.loss;
+      summary.seconds = recovered.seconds;
+    } else {
+      sequence = LoadSequence(init_path);
+      Fitter fitter(*target, &sequence, options);
+      summary = fitter.Fit();
+    }
   } catch (const std::exception& e) {
     return fail(e.what());
   }
@@ -154,16 +178,27 @@ int main(int argc, char** argv) {
                   {"vertices", outputs.result.NumVertices()},
                   {"faces", outputs.result.NumFaces()}}}};
   if (options.fit_gates) metrics["fit"]["gates_before_finalisation"] = summary.gates_before_finalisation;
+  metrics["mode"] = zero_shot ? "zero-shot" : "fit-parameters";
+  metrics["ops"] = static_cast<int>(sequence.ops.size());
+  if (zero_shot) {
+    metrics["fit"] = {{"final_loss", Number(recovered.loss)},
+                      {"fits", recovered.num_fits},
+                      {"seconds", recovered.seconds},
+                      {"time_budget_seconds", zero_shot_options.time_budget_seconds}};
+  }
+  std::string log;
+  for (const std::string& line : recovered.decisions) log += line + "\n";
 
   try {
-    WriteSequenceOutputs(outputs, out_dir, /*write_steps=*/false,
+    WriteSequenceOutputs(outputs, out_dir, /*write_steps=*/true,
                          "opgraph fit_sequence result (the input's frame and units)");
     WriteFileAtomic(out_dir + "/metrics.json", metrics.dump(1) + "\n");
+    WriteFileAtomic(out_dir + "/log.txt", log);
   } catch (const std::exception& e) {
     std::cerr << "fit_sequence: " << e.what() << "\n";
     return 1;
   }
-  std::cout << "fit_sequence: loss " << summary.initial_loss << " -> " << summary.final_loss << ", Chamfer "
+  std::cout << "fit_sequence: " << sequence.ops.size() << " ops, loss " << summary.final_loss << ", Chamfer "
             << shape.chamfer.Sum() << " (unit box), " << summary.seconds << " s -> " << out_dir << "\n";
   return 0;
 }
