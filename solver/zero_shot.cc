@@ -10,6 +10,7 @@
 #include <sstream>
 
 #include "core/geometry.h"
+#include "core/metrics.h"
 #include "ops/sequence.h"
 
 namespace opgraph {
@@ -57,6 +58,17 @@ struct Layout {
     size_t i = 0;
     for (Json& op : out.profile) op = ops[i++];
     for (Json& op : out.grid) op = ops[i++];
+    // A loop lies in a plane across its cut axis, so scaling along that axis about the loop's
+    // median does nothing; the fit leaves it drifting (to 1e4 and more), and Blender's float
+    // coordinates would turn that into real offsets. Pin it to 1.
+    for (std::vector<Json>* part : {&out.profile, &out.grid}) {
+      for (Json& op : *part) {
+        if (op["op"] != "EdgeLoopAffineScale") continue;
+        for (int axis = 0; axis < 3; ++axis) {
+          if (!op["params"]["verts"]["box"][0][axis].is_null()) op["params"]["scale"][axis] = 1.0;
+        }
+      }
+    }
     out.scale = ops[i++];
     for (Json& op : out.deforms) op = ops[i++];
     for (Json& op : out.details) op = ops[i++];
@@ -423,20 +435,57 @@ class Controller {
           height += c.height / static_cast<double>(group.size());
           width += c.width / static_cast<double>(group.size());
         }
-        const Json faces = {{"centers", centers}, {"expect", group.size()}};
+        Json faces = {{"centers", centers}, {"expect", group.size()}};
+        // A shared normal keeps the selector on the same faces when an edit moves their centres.
+        bool shared_normal = true;
+        for (const Candidate& c : group) shared_normal = shared_normal && normals[c.face].dot(normals[group[0].face]) > 0.99;
+        if (shared_normal) faces["normal"] = ToJson(normals[group[0].face]), faces["min_dot"] = 0.9;
         const std::string count = group.size() > 1 ? " x" + std::to_string(group.size()) : "";
         if (height > 0) {
           l->details.push_back(
               MakeOp("Extrude", {{"faces", faces}, {"height", height}, {"width", width}, {"mode", "individual"}}));
           return "+Extrude out" + count + " " + std::to_string(height) + " width " + std::to_string(width);
         }
-        // A cavity: inset the faces, then push the inner faces in.
-        l->details.push_back(MakeOp("Inset", {{"faces", faces}, {"thickness", 0.1 * half_extent_.minCoeff()}}));
-        l->details.push_back(MakeOp("Extrude", {{"faces", faces}, {"height", height}, {"mode", "individual"}}));
-        return "+Inset +Extrude in" + count + " " + std::to_string(height);
+        // A cavity: the faces pushed in, each through a narrowed cap (a hole with a rim).
+        l->details.push_back(
+            MakeOp("Extrude", {{"faces", faces}, {"height", height}, {"width", 0.7}, {"mode", "individual"}}));
+        return "+Extrude in" + count + " " + std::to_string(height);
       });
     }
     return best;
+  }
+
+  // Drops ops the result does not need: each op in turn (last first) is removed when the
+  // sequence without it still replays and its Chamfer distance to the target grows by under 2%.
+  Json Simplify(Json document) {
+    MetricsOptions metrics_options;
+    metrics_options.num_samples = 3000;
+    metrics_options.seed = options_.seed;
+    auto chamfer = [&](const Json& candidate) {
+      try {
+        Sequence sequence = ParseSequence(candidate);
+        return ComputeShapeMetrics(EvaluateSequence(&sequence).back(), target_.shape(), metrics_options).chamfer.Sum();
+      } catch (const std::exception&) {
+        return kInf;
+      }
+    };
+    double current = chamfer(document);
+    for (int k = static_cast<int>(document["operations"].size()) - 1; k >= 0; --k) {
+      if (document["operations"].size() == 1) break;
+      Json candidate = document;
+      const std::string name = candidate["operations"][k]["op"];
+      candidate["operations"].erase(static_cast<size_t>(k));
+      const double without = chamfer(candidate);
+      if (without <= current * 1.02 + 1e-7) {
+        std::ostringstream line;
+        line << "[zero-shot] simplify: removed op " << k << " (" << name << "): Chamfer " << current << " -> " << without;
+        decisions_.push_back(line.str());
+        if (options_.progress != nullptr) *options_.progress << line.str() << std::endl;
+        document = candidate;
+        current = without;
+      }
+    }
+    return document;
   }
 
   ZeroShotResult Finish(const Trial& best) {
@@ -469,6 +518,7 @@ class Controller {
       const Trial polished = Fit(best.layout, final_options_);
       if (polished.ok) document = polished.layout.Document(), loss = polished.loss;
     }
+    document = Simplify(document);
     ZeroShotResult result;
     result.sequence = document;
     result.loss = loss;

@@ -99,7 +99,8 @@ TEST(FitSequence, BadInputFailsWithOneLineAndWritesNothing) {
       {"--input " + Quote((dir / "empty.obj").string()) + " --init " + init, "empty"},
       {"--input " + cube + " --init " + init + " --optimizer sgd", "--optimizer"},
       {"--input " + cube + " --init " + init + " --seed x", "--seed"},
-      {"--input " + cube, "usage"},
+      {"--init " + init, "usage"},
+      {"--input " + cube + " --time-budget 0", "--time-budget"},
   };
   for (const auto& c : cases) {
     const fs::path out = dir / "out";
