@@ -113,6 +113,7 @@ class Controller {
       const double before = best.loss;
       best = StageProfile(best);
       best = StageDeforms(best);
+      best = StageHoles(best);
       best = RepeatDetails(best);
       best = StageGrid(best);
       best = ConsiderSmoothing(best);
@@ -301,6 +302,36 @@ class Controller {
         }
         return what;
       });
+    }
+    return best;
+  }
+
+  // Holes through the shape (a ring, a handle's eye): a Boolean difference with a prism or a box
+  // through the centre along each axis; the fit sizes and places it.
+  Trial StageHoles(Trial best) {
+    for (const char* primitive : {"prism8", "cube"}) {
+      for (int axis = 0; axis < 3 && InBudget(); ++axis) {
+        best = Consider("hole", best, [&](Layout* l) -> std::string {
+          for (const Json& op : l->details) {
+            if (op["op"] == "Boolean") return "";
+          }
+          Vec3d size = half_extent_;  // half the extent across the axis, through it entirely
+          size[axis] = 6 * half_extent_[axis];
+          // The prism's axis is +Z: turn it onto `axis`.
+          Vec3d rotation_deg = Vec3d::Zero();
+          if (axis == 0) rotation_deg.y() = 90;
+          if (axis == 1) rotation_deg.x() = 90;
+          Vec3d size_in_primitive = size;
+          if (axis == 0) size_in_primitive = Vec3d(size.z(), size.y(), size.x());
+          if (axis == 1) size_in_primitive = Vec3d(size.x(), size.z(), size.y());
+          l->details.push_back(MakeOp("Boolean", {{"operation", "DIFFERENCE"},
+                                                  {"primitive", primitive},
+                                                  {"size", ToJson(size_in_primitive)},
+                                                  {"rotation_deg", ToJson(rotation_deg)},
+                                                  {"location", {0.0, 0.0, 0.0}}}));
+          return std::string("+Boolean difference ") + primitive + " along " + kAxisNames[axis];
+        });
+      }
     }
     return best;
   }
