@@ -29,6 +29,7 @@ std::string FitterOptions::Check() const {
   if (!(prune_gate > 0 && prune_gate < 1)) return "prune_gate must be in (0, 1)";
   if (max_outer_iterations < 1 || max_inner_iterations < 1 || adam_iterations < 1) return "iteration limits must be >= 1";
   if (!(adam_learning_rate > 0)) return "adam_learning_rate must be > 0";
+  if (!(initial_trust_region_radius > 0)) return "initial_trust_region_radius must be > 0";
   if (!(min_relative_improvement >= 0)) return "min_relative_improvement must be >= 0";
   if (num_threads < 1) return "num_threads must be >= 1";
   for (const ParameterRangeRule& rule : domain_rules) {
@@ -79,6 +80,7 @@ Fitter::Fitter(const Target& target, Sequence* sequence, const FitterOptions& op
   const std::string problem = options.Check();
   if (!problem.empty()) throw std::invalid_argument("fitter options: " + problem);
   program_ = std::make_unique<Program>(sequence, options.fit_gates);
+  trust_region_radius_ = options.initial_trust_region_radius;
 }
 
 Fitter::~Fitter() = default;
@@ -256,9 +258,17 @@ double Fitter::Solve(const Correspondences& correspondences, double sparsity_wei
     solver_options.logging_type = ceres::SILENT;
     solver_options.function_tolerance = 1e-8;
     solver_options.parameter_tolerance = 1e-10;
+    // The trust region carries over between correspondence updates: the first solve starts
+    // cautious (large early steps tend to jump between near-equivalent configurations, such as
+    // an inset's depth traded for an extrusion's height), later ones where the last ended.
+    solver_options.initial_trust_region_radius = trust_region_radius_;
     ceres::Solver::Summary solver_summary;
     ceres::Solve(solver_options, &problem, &solver_summary);
     summary->inner_iterations += static_cast<int>(solver_summary.iterations.size()) - 1;
+    if (!solver_summary.iterations.empty()) {
+      trust_region_radius_ = std::max(options_.initial_trust_region_radius,
+                                      std::min(1e16, solver_summary.iterations.back().trust_region_radius));
+    }
     program_->PrepareForEvaluation(false, true);  // leave the cache at the solution
     return 2 * solver_summary.final_cost;
   }

@@ -44,6 +44,7 @@ struct FitterOptions {
   double prune_gate = 0.5;
   int max_outer_iterations = 40;    // correspondence updates per stage (stops earlier on stagnation)
   int max_inner_iterations = 5;     // LM iterations per solve (short: correspondences go stale)
+  double initial_trust_region_radius = 1e-2;  // LM's first; later solves continue from the last
   int adam_iterations = 150;        // Adam steps per solve
   double adam_learning_rate = 0.01;
   double min_relative_improvement = 1e-3;  // outer loop stops below this
@@ -107,6 +108,7 @@ class Fitter {
   FitterOptions options_;
   std::unique_ptr<Program> program_;
   double sparsity_weight_ = 0;
+  double trust_region_radius_ = 0;
   bool hold_params_ = false, hold_gates_ = false;  // blocks held constant in the current stage
   uint64_t update_count_ = 0;
   double start_time_ = 0;

@@ -91,7 +91,7 @@ TEST(Fit, RecoversPerturbedParameters) {
   MetricsOptions metrics_options;
   metrics_options.num_samples = 5000;
   constexpr int kSeedsPerCase = 3;
-  int runs = 0;
+  int runs = 0, exact = 0;
   for (size_t c = 0; c < cases.size() * kSeedsPerCase; ++c) {
     const RecoveryCase& rc = cases[c / kSeedsPerCase];
     ++runs;
@@ -122,14 +122,18 @@ TEST(Fit, RecoversPerturbedParameters) {
     const double floor = SamplingNoiseFloor(target_mesh, metrics_options);
     const bool ok = metrics.chamfer.Sum() <= 2 * floor;
     passed += ok;
+    exact += metrics.chamfer.Sum() < 1e-4;
     std::printf("[recovery] %-14s seed %zu: %2d params, loss %.3e -> %.3e, Chamfer %.2e (floor %.2e) %s, %d updates, %d LM its, %.2f s\n",
                 rc.name.c_str(), c % kSeedsPerCase, perturbed, summary.initial_loss, summary.final_loss, metrics.chamfer.Sum(), floor,
                 ok ? "ok" : "MISSED", summary.outer_iterations, summary.inner_iterations, summary.seconds);
     EXPECT_GT(perturbed, 0) << rc.name;
     EXPECT_LT(summary.final_loss, summary.initial_loss) << rc.name;
   }
-  std::printf("[recovery] %d of %d within 2x the noise floor\n", passed, runs);
+  std::printf("[recovery] %d of %d within 2x the noise floor, %d exact (Chamfer < 1e-4)\n", passed, runs, exact);
   EXPECT_GE(passed, 0.9 * runs);
+  // The noise floor (~0.01-0.03 of the unit box) is a loose bar; the targets here are exactly
+  // reachable, so most runs must also recover the shape exactly.
+  EXPECT_GE(exact, 0.8 * runs);
 }
 
 }  // namespace
