@@ -70,6 +70,7 @@ struct Objective {
     std::unique_ptr<ceres::CostFunction> cost;
     const ceres::LossFunction* loss;
     std::vector<double*> blocks;
+    std::vector<int> columns;  // first Program Jacobian column of each block
   };
   std::vector<Term> terms;
   std::vector<std::unique_ptr<ceres::LossFunction>> losses;
@@ -126,7 +127,7 @@ void Fitter::BuildCorrespondences(uint64_t seed, Correspondences* out) {
 
 namespace {
 
-void BuildObjective(const Program& program, const Sequence& sequence, const FitterOptions& options, double unit_scale,
+void BuildObjective(const Program& program, const FitterOptions& options, double unit_scale,
                     const std::vector<SurfaceCorrespondence>& forward, double forward_weight,
                     const std::vector<SurfaceCorrespondence>& backward, double backward_weight,
                     const double* sparsity_weight, Objective* objective) {
@@ -155,7 +156,13 @@ void BuildObjective(const Program& program, const Sequence& sequence, const Fitt
       }
     }
   }
-  (void)sequence;
+  for (Objective::Term& term : objective->terms) {
+    for (double* data : term.blocks) {
+      for (const ProgramBlock& block : program.blocks()) {
+        if (block.data == data) term.columns.push_back(block.column);
+      }
+    }
+  }
 }
 
 // Sum over terms of rho(|r|^2) at the program's current evaluation; with `gradient` (one entry
@@ -189,10 +196,7 @@ double EvaluateObjective(const Program& program, const Objective& objective, std
     if (!gradient) continue;
     // d rho / d params = 2 rho'(s) J^T r; map each block to its Program columns.
     for (size_t b = 0; b < sizes.size(); ++b) {
-      int column = -1;
-      for (const ProgramBlock& block : program.blocks()) {
-        if (block.data == term.blocks[b]) column = block.column;
-      }
+      const int column = term.columns[b];
       for (int j = 0; j < sizes[b]; ++j) {
         double g = 0;
         for (int i = 0; i < m; ++i) g += jacobian_pointers[b][i * sizes[b] + j] * (*residuals)[i];
@@ -209,7 +213,7 @@ double Fitter::CurrentLoss() {
   Correspondences correspondences;
   BuildCorrespondences(options_.seed, &correspondences);
   Objective objective;
-  BuildObjective(*program_, *sequence_, options_, target_.scale(), correspondences.output_to_target,
+  BuildObjective(*program_, options_, target_.scale(), correspondences.output_to_target,
                  correspondences.output_to_target_weight, correspondences.target_to_output,
                  correspondences.target_to_output_weight, &sparsity_weight_, &objective);
   program_->PrepareForEvaluation(false, true);
@@ -220,7 +224,7 @@ double Fitter::CurrentLoss() {
 double Fitter::Solve(const Correspondences& correspondences, double sparsity_weight, FitSummary* summary) {
   sparsity_weight_ = sparsity_weight;
   Objective objective;
-  BuildObjective(*program_, *sequence_, options_, target_.scale(), correspondences.output_to_target,
+  BuildObjective(*program_, options_, target_.scale(), correspondences.output_to_target,
                  correspondences.output_to_target_weight, correspondences.target_to_output,
                  correspondences.target_to_output_weight, &sparsity_weight_, &objective);
   const std::vector<ProgramBlock>& blocks = program_->blocks();
@@ -355,7 +359,7 @@ double Fitter::RunStage(double sparsity_weight, FitSummary* summary) {
     // The same seed every update: samples move smoothly with the shape, so losses compare.
     BuildCorrespondences(options_.seed, &correspondences);
     Objective objective;
-    BuildObjective(*program_, *sequence_, options_, target_.scale(), correspondences.output_to_target,
+    BuildObjective(*program_, options_, target_.scale(), correspondences.output_to_target,
                    correspondences.output_to_target_weight, correspondences.target_to_output,
                    correspondences.target_to_output_weight, &sparsity_weight_, &objective);
     program_->PrepareForEvaluation(false, true);
