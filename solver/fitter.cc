@@ -221,6 +221,50 @@ double Fitter::CurrentLoss() {
   return EvaluateObjective(*program_, objective, nullptr, &r, &j);
 }
 
+void Fitter::AddToProblem(const Objective& objective, ceres::Problem* problem) const {
+  for (const ProgramBlock& block : program_->blocks()) {
+    problem->AddParameterBlock(block.data, block.size);
+    if (static_cast<int>(block.constant.size()) == block.size || (block.is_gate ? hold_gates_ : hold_params_)) {
+      problem->SetParameterBlockConstant(block.data);
+    } else if (!block.constant.empty()) {
+      problem->SetManifold(block.data, new ceres::SubsetManifold(block.size, block.constant));
+    }
+    if (!block.is_gate) {
+      const std::vector<ParamSpec>& specs = sequence_->ops[block.op]->specs();
+      for (int i = 0; i < block.size; ++i) {
+        problem->SetParameterLowerBound(block.data, i, specs[i].lower);
+        problem->SetParameterUpperBound(block.data, i, specs[i].upper);
+      }
+    }
+  }
+  for (const Objective::Term& term : objective.terms) {
+    problem->AddResidualBlock(term.cost.get(), const_cast<ceres::LossFunction*>(term.loss), term.blocks);
+  }
+}
+
+void Fitter::EvaluateBothWays(double* own_loss, std::vector<double>* own_gradient, double* ceres_loss,
+                              std::vector<double>* ceres_gradient) {
+  Correspondences correspondences;
+  BuildCorrespondences(options_.seed, &correspondences);
+  Objective objective;
+  BuildObjective(*program_, options_, target_.scale(), correspondences.output_to_target,
+                 correspondences.output_to_target_weight, correspondences.target_to_output,
+                 correspondences.target_to_output_weight, &sparsity_weight_, &objective);
+  program_->PrepareForEvaluation(true, true);
+  std::vector<double> r, j;
+  *own_loss = EvaluateObjective(*program_, objective, own_gradient, &r, &j);
+  ceres::Problem::Options problem_options;
+  problem_options.evaluation_callback = program_.get();
+  problem_options.cost_function_ownership = ceres::DO_NOT_TAKE_OWNERSHIP;
+  problem_options.loss_function_ownership = ceres::DO_NOT_TAKE_OWNERSHIP;
+  ceres::Problem problem(problem_options);
+  AddToProblem(objective, &problem);
+  double cost = 0;
+  problem.Evaluate(ceres::Problem::EvaluateOptions(), &cost, nullptr, ceres_gradient, nullptr);
+  *ceres_loss = 2 * cost;
+  for (double& g : *ceres_gradient) g *= 2;
+}
+
 double Fitter::Solve(const Correspondences& correspondences, double sparsity_weight, FitSummary* summary) {
   sparsity_weight_ = sparsity_weight;
   Objective objective;
@@ -235,24 +279,7 @@ double Fitter::Solve(const Correspondences& correspondences, double sparsity_wei
     problem_options.cost_function_ownership = ceres::DO_NOT_TAKE_OWNERSHIP;
     problem_options.loss_function_ownership = ceres::DO_NOT_TAKE_OWNERSHIP;
     ceres::Problem problem(problem_options);
-    for (const ProgramBlock& block : blocks) {
-      problem.AddParameterBlock(block.data, block.size);
-      if (static_cast<int>(block.constant.size()) == block.size || (block.is_gate ? hold_gates_ : hold_params_)) {
-        problem.SetParameterBlockConstant(block.data);
-      } else if (!block.constant.empty()) {
-        problem.SetManifold(block.data, new ceres::SubsetManifold(block.size, block.constant));
-      }
-      if (!block.is_gate) {
-        const std::vector<ParamSpec>& specs = sequence_->ops[block.op]->specs();
-        for (int i = 0; i < block.size; ++i) {
-          problem.SetParameterLowerBound(block.data, i, specs[i].lower);
-          problem.SetParameterUpperBound(block.data, i, specs[i].upper);
-        }
-      }
-    }
-    for (const Objective::Term& term : objective.terms) {
-      problem.AddResidualBlock(term.cost.get(), const_cast<ceres::LossFunction*>(term.loss), term.blocks);
-    }
+    AddToProblem(objective, &problem);
     ceres::Solver::Options solver_options;
     solver_options.minimizer_type = ceres::TRUST_REGION;
     solver_options.trust_region_strategy_type = ceres::LEVENBERG_MARQUARDT;

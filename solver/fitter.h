@@ -21,6 +21,8 @@
 #include <string>
 #include <vector>
 
+#include <ceres/problem.h>
+
 #include "residuals/correspondence_cost.h"
 #include "solver/program.h"
 #include "solver/target.h"
@@ -75,6 +77,8 @@ struct FitSummary {
   std::vector<Point> history;
 };
 
+struct Objective;  // residual blocks at fixed correspondences (fitter.cc)
+
 class Fitter {
  public:
   // Prepares the sequence's topology at its current parameters (discrete choices fixed).
@@ -93,8 +97,16 @@ class Fitter {
   // Data loss at the current parameters with fresh correspondences.
   double CurrentLoss();
 
+  // Checks that both optimizers see one objective: at the current parameters and fresh
+  // correspondences, the loss and gradient (per Program column) as Adam evaluates them, and
+  // as Ceres does (Problem::Evaluate over the same residual blocks; 2 x its cost and gradient,
+  // one entry per parameter of the blocks it varies).
+  void EvaluateBothWays(double* own_loss, std::vector<double>* own_gradient, double* ceres_loss,
+                        std::vector<double>* ceres_gradient);
+
  private:
   struct Correspondences;
+  void AddToProblem(const Objective& objective, ceres::Problem* problem) const;
   void BuildCorrespondences(uint64_t seed, Correspondences* out);
   double RunStage(double sparsity_weight, FitSummary* summary);
   double Solve(const Correspondences& correspondences, double sparsity_weight, FitSummary* summary);

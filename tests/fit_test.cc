@@ -184,6 +184,7 @@ TEST(Fit, DecoyOpIsPruned) {
     EXPECT_EQ(summary.pruned_ops, std::vector<int>{decoy.index}) << decoy.name;
     ASSERT_EQ(sequence.ops.size(), 3u);
     for (double g : sequence.gates) EXPECT_EQ(g, 1.0);
+    EXPECT_NO_THROW(BlenderScript(sequence));  // exportable: every gate is 1
     const Mesh fitted = EvaluateSequence(&sequence).back();
     MetricsOptions metrics_options;
     metrics_options.num_samples = 5000;
@@ -281,6 +282,48 @@ TEST(Fit, DomainRuleBoundsAParameter) {
   EXPECT_NEAR(free_angle, 70.0, 1e-4);
   EXPECT_LT(ruled_angle, RadToDeg(0.5) + 3.0);
   EXPECT_GT(ruled_angle, 0.0);
+}
+
+}  // namespace
+}  // namespace opgraph
+
+namespace opgraph {
+namespace {
+
+// Adam and Ceres minimise one objective: the same loss and gradient at a point (free gates,
+// a robust loss and a domain rule included), and Adam also recovers a perturbed shape.
+TEST(Fit, AdamAndCeresSeeOneObjective) {
+  const Target target(TwistedBox(), {}, TargetOptions());
+  Sequence sequence = ParseSequence(Json::parse(kTwistedBox));
+  FitterOptions options = TestOptions();
+  options.fit_gates = true;
+  options.loss = RobustLoss::kHuber;
+  options.loss_scale = 0.01;
+  options.domain_rules.push_back({2, 0, -0.5, 0.5, 3.0});
+  Fitter fitter(target, &sequence, options);
+  PerturbParameters(fitter.program(), sequence, 8);
+  double own_loss, ceres_loss;
+  std::vector<double> own_gradient, ceres_gradient;
+  fitter.EvaluateBothWays(&own_loss, &own_gradient, &ceres_loss, &ceres_gradient);
+  EXPECT_GT(own_loss, 0);
+  EXPECT_NEAR(own_loss, ceres_loss, 1e-12 * own_loss);
+  // No held parameters here (no Subdivision), so Ceres' gradient has every Program column.
+  ASSERT_EQ(own_gradient.size(), ceres_gradient.size());
+  double largest = 0;
+  for (double g : own_gradient) largest = std::max(largest, std::abs(g));
+  EXPECT_GT(largest, 0);
+  for (size_t c = 0; c < own_gradient.size(); ++c) EXPECT_NEAR(own_gradient[c], ceres_gradient[c], 1e-10 * largest) << c;
+
+  FitterOptions adam = TestOptions();
+  adam.optimizer = Optimizer::kAdam;
+  FitSummary summary;
+  const Json fitted = FitTwistedBox(target, adam, &summary);
+  MetricsOptions metrics_options;
+  metrics_options.num_samples = 5000;
+  const double chamfer = ComputeShapeMetrics(Evaluate(fitted), TwistedBox(), metrics_options).chamfer.Sum();
+  std::printf("[adam] twisted box: loss %.3e -> %.3e, Chamfer %.2e, %d steps\n", summary.initial_loss,
+              summary.final_loss, chamfer, summary.inner_iterations);
+  EXPECT_LT(chamfer, 1e-3);
 }
 
 }  // namespace
