@@ -154,6 +154,8 @@ int main(int argc, char** argv) {
                   {"vertices", outputs.result.NumVertices()},
                   {"faces", outputs.result.NumFaces()}}}};
   if (options.fit_gates) metrics["fit"]["gates_before_finalisation"] = summary.gates_before_finalisation;
+  // Two independent sample sets of the target itself: Chamfer below this is within sampling noise.
+  if (!target->is_cloud()) metrics["shape"]["sampling_noise_floor"] = SamplingNoiseFloor(target->shape(), metrics_options);
 
   try {
     WriteSequenceOutputs(outputs, out_dir, /*write_steps=*/false,
