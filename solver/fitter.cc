@@ -139,20 +139,20 @@ void BuildObjective(const Program& program, const FitterOptions& options, double
     const ceres::LossFunction* loss = objective->losses.back().get();
     for (const SurfaceCorrespondence& c : list) {
       objective->terms.push_back(
-          {std::make_unique<CorrespondenceCost>(&program, c, options.metric, weight), loss, all_blocks});
+          {std::make_unique<CorrespondenceCost>(&program, c, options.metric, weight), loss, all_blocks, {}});
     }
   };
   add_terms(forward, forward_weight);
   add_terms(backward, backward_weight);
   for (const ProgramBlock& block : program.blocks()) {
     if (block.is_gate) {
-      objective->terms.push_back({std::make_unique<GateSparsityCost>(sparsity_weight), nullptr, {block.data}});
+      objective->terms.push_back({std::make_unique<GateSparsityCost>(sparsity_weight), nullptr, {block.data}, {}});
     }
   }
   for (const ParameterRangeRule& rule : options.domain_rules) {
     for (const ProgramBlock& block : program.blocks()) {
       if (!block.is_gate && block.op == rule.op && rule.param >= 0 && rule.param < block.size) {
-        objective->terms.push_back({std::make_unique<ParameterRangeCost>(rule, block.size), nullptr, {block.data}});
+        objective->terms.push_back({std::make_unique<ParameterRangeCost>(rule, block.size), nullptr, {block.data}, {}});
       }
     }
   }
