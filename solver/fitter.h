@@ -1,13 +1,16 @@
 // Fits every continuous parameter (and optionally the gates) of a sequence skeleton to a
 // target: Chamfer residuals with correspondences fixed inside each solve (Levenberg-Marquardt,
 // or Adam over exactly the same objective and gradients), re-estimated in an outer ICP loop
-// until the loss stops improving.
+// until the loss stops improving. The loss: sum over residuals of rho(r^2), which without a
+// robust loss is the mean squared distance (target's unit box) of each direction, weighted and
+// summed, plus the gate and domain-rule penalties.
 //
 // With fit_gates the fit runs in stages: (1) the parameters with the gates held, (2) the gates
-// under the gate sparsity weight with the parameters held, (3) finalisation: ops whose gate fell below prune_gate are
-// removed, the other free gates are folded into their op's parameters (p <- identity +
-// g (p - identity), which is each op's gate blend) and set to 1, and a last solve polishes
-// the parameters with gates fixed, so the result is exportable to Blender.
+// under the gate sparsity weight with the parameters held, (3) finalisation: ops whose gate
+// fell below prune_gate are removed, the other free gates are folded into their op's
+// parameters (p <- identity + g (p - identity), which is each op's gate blend) and set to 1,
+// and a last solve polishes the parameters with gates fixed, so the result is exportable to
+// Blender.
 //
 // The result is the best parameter set at which the sequence, as written, rebuilds the fitted
 // mesh (geometric targets such as face boxes resolve to the same elements), when there is one.
@@ -42,7 +45,7 @@ struct FitterOptions {
   RobustLoss loss = RobustLoss::kNone;
   double loss_scale = 0.02;  // robust loss scale, unit-box units
   bool fit_gates = false;
-  double gate_sparsity_weight = 1e-4;  // stage 2 weight of sum(g^2) / 2 (data loss: unit box)
+  double gate_sparsity_weight = 1e-4;  // stage 2: adds weight * g^2 per free gate to the loss
   double prune_gate = 0.5;
   int max_outer_iterations = 40;    // correspondence updates per stage (stops earlier on stagnation)
   int max_inner_iterations = 5;     // LM iterations per solve (short: correspondences go stale)

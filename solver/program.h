@@ -46,8 +46,6 @@ class Program : public ceres::EvaluationCallback {
   // The gate of op `op` (sigmoid of its logit when free).
   double Gate(int op) const;
   bool GateIsFree(int op) const { return gate_block_[op] >= 0; }
-  // Fixes the gate of `op` at `gate` (its logit block, if any, is left to the caller to hold).
-  void SetGate(int op, double gate);
   // Writes the current gates into the sequence.
   void StoreGates() const;
 
