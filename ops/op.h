@@ -44,6 +44,9 @@ class Op {
   // Throws FieldError when a target does not exist on `input`.
   virtual void Prepare(const Mesh& input) = 0;
   const std::vector<Polygon>& output_faces() const { return output_faces_; }
+  // Output topology at `gate`: output_faces(), except for an op whose gate is a hard switch
+  // (Boolean: the identity below 0.5), where Evaluate writes this topology's positions.
+  virtual const std::vector<Polygon>& OutputFaces(double /*gate*/) const { return output_faces_; }
   int num_output_vertices() const { return num_output_vertices_; }
 
   // Geometry pass. `params` has specs().size() entries; `gate` in [0, 1] blends the op toward

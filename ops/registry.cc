@@ -3,6 +3,7 @@
 #include <map>
 #include <stdexcept>
 
+#include "ops/boolean.h"
 #include "ops/global_affine.h"
 #include "ops/inset.h"
 #include "ops/knife_cut.h"
@@ -49,6 +50,7 @@ const std::map<std::string, Factory>& Factories() {
       {"Extrude", [](const Json& p) { return std::make_unique<ExtrudeOp>(p); }},
       {"Inset", [](const Json& p) { return std::make_unique<InsetOp>(p); }},
       {"KnifeCut", [](const Json& p) { return std::make_unique<KnifeCutOp>(p); }},
+      {"Boolean", [](const Json& p) { return std::make_unique<BooleanOp>(p); }},
   };
   return factories;
 }

@@ -101,7 +101,7 @@ std::vector<Mesh> EvaluateSequence(Sequence* sequence) {
       throw SequenceError(OpLabel(i, op.Name()) + ": field '" + e.field() + "': " + e.what());
     }
     op.Evaluate(op.params().data(), sequence->gates[i], current.vertices, &next.vertices);
-    next.faces = op.output_faces();
+    next.faces = op.OutputFaces(sequence->gates[i]);
     const std::string problem = next.Validate();
     if (!problem.empty()) throw SequenceError(OpLabel(i, op.Name()) + ": result invalid: " + problem);
     steps.push_back(next);

@@ -71,6 +71,26 @@ Json ConvertGtSequence(const std::filesystem::path& path, std::string* why_not) 
                 {"near", p.value("near", Json::array({0.0, 0.0, 0.0}))}};
     } else if (name == "KnifeCut" && p.contains("plane_co")) {
       params = {{"plane_co", p.at("plane_co")}, {"plane_no", p.at("plane_no")}};
+    } else if (name == "Boolean") {
+      const Json& prim = p.at("primitive");
+      const std::string type = prim.at("type");
+      if (p.value("solver", "EXACT") != "EXACT" || p.value("use_self", false) || p.value("use_hole_tolerant", false)) {
+        *why_not = "Boolean other than the EXACT solver without self intersection and hole tolerance";
+        return nullptr;
+      }
+      const int segments = type == "prism6" ? 6 : type == "prism8" ? 8 : 32;
+      if (type != "cube" && prim.value("segments", segments) != segments) {
+        *why_not = "Boolean " + type + " with " + std::to_string(prim["segments"].get<int>()) + " segments";
+        return nullptr;
+      }
+      Json size = prim.value("size", Json());
+      if (type != "cube") {
+        const double diameter = 2 * prim.at("radius").get<double>();
+        size = Json::array({diameter, diameter, prim.at("depth")});
+      }
+      params = {{"operation", p.at("operation")}, {"primitive", type}, {"size", size},
+                {"rotation_deg", prim.value("rotation_deg", Json::array({0.0, 0.0, 0.0}))},
+                {"location", prim.value("location", Json::array({0.0, 0.0, 0.0}))}};
     } else {
       *why_not = "no converter for " + name + " yet";
       return nullptr;

@@ -131,7 +131,7 @@ TEST_P(ParityCase, GateZeroIsIdentity) {
     op.Prepare(inputs[i]);
     Mesh out;
     op.Evaluate(op.params().data(), 0.0, inputs[i].vertices, &out.vertices);
-    out.faces = op.output_faces();
+    out.faces = op.OutputFaces(0.0);
     const double tolerance =
         1e-12 + (op.Name() == "Subdivision" ? MaxNonPlanarity(inputs[i]) / BoundingBoxDiagonal(inputs[i]) : 0);
     EXPECT_LT(SymmetricSurfaceDistanceRelative(inputs[i], out), tolerance) << "op " << i << " " << op.Name();
@@ -217,6 +217,22 @@ TEST(GtDev, SequencesReproduceBlenderModels) {
   std::cout << "[gt-dev] compared " << checked << " models\n";
 }
 
+// Boolean needs a closed, consistently oriented input (no sequence can build an open one, so the
+// op is called directly on a cube without its top face).
+TEST(Boolean, RejectsOpenInput) {
+  Mesh open = MakeCube(2.0);
+  open.faces.pop_back();
+  std::unique_ptr<Op> op =
+      CreateOp("Boolean", Json::parse(R"({"operation": "UNION", "primitive": "cube", "size": [1, 1, 1]})"));
+  try {
+    op->Prepare(open);
+    FAIL() << "no error for an open input";
+  } catch (const FieldError& e) {
+    EXPECT_EQ(e.field(), "operation");
+    EXPECT_NE(std::string(e.what()).find("not a closed"), std::string::npos) << e.what();
+  }
+}
+
 // Bad input: one line naming the problem, exit code 2, nothing written.
 struct BadInput {
   const char* name;
@@ -283,6 +299,12 @@ INSTANTIATE_TEST_SUITE_P(
                  "operation 0 (KnifeCut): field 'plane_no': must not be zero"},
         BadInput{"bad_word", R"({"operations": [{"op": "SimpleDeformTwist", "params": {"axis": "W'); import os; ('", "angle_deg": 10}}]})",
                  "operation 0 (SimpleDeformTwist): field 'axis': 'W'); import os; ('' is not one of X, Y, Z"},
+        BadInput{"boolean_primitive",
+                 R"({"operations": [{"op": "Boolean", "params": {"operation": "UNION", "primitive": "sphere", "size": [1, 1, 1]}}]})",
+                 "operation 0 (Boolean): field 'primitive': 'sphere' is not one of cube, prism6, prism8, cylinder"},
+        BadInput{"boolean_size",
+                 R"({"operations": [{"op": "Boolean", "params": {"operation": "DIFFERENCE", "primitive": "cube", "size": [1, 0, 1]}}]})",
+                 "operation 0 (Boolean): field 'size[1]': value 0 out of range"},
         BadInput{"bad_gate", R"({"operations": [{"op": "GlobalAffineTranslate", "params": {"offset": [0, 0, 0]}, "gate": 2}]})",
                  "operation 0 (GlobalAffineTranslate): field 'gate'"}),
     [](const ::testing::TestParamInfo<BadInput>& info) { return std::string(info.param.name); });

@@ -1,0 +1,683 @@
+#include "ops/boolean.h"
+
+#include <algorithm>
+#include <map>
+#include <numeric>
+#include <set>
+
+#include "core/geometry.h"
+#include "ops/boolean_cgal.h"
+
+namespace opgraph {
+namespace {
+
+const std::vector<std::string> kOperations = {"UNION", "DIFFERENCE"};
+const std::vector<std::string> kPrimitives = {"cube", "prism6", "prism8", "cylinder"};
+constexpr double kGateSwitch = 0.5;
+
+int Segments(const std::string& primitive) {
+  if (primitive == "prism6") return 6;
+  if (primitive == "prism8") return 8;
+  return 32;
+}
+
+// bmesh create_cone(cap_ends=True, segments=n, radius1=radius2=0.5, depth=1) with Blender's
+// vertex and face order.
+Mesh MakePrism(int n) {
+  Mesh mesh;
+  for (int k = 0; k < n; ++k) {
+    const double angle = 2 * kPi * k / n;
+    mesh.vertices.emplace_back(0.5 * std::sin(angle), 0.5 * std::cos(angle), -0.5);
+    mesh.vertices.emplace_back(0.5 * std::sin(angle), 0.5 * std::cos(angle), 0.5);
+  }
+  auto side = [n](int k) {
+    const int next = (k + 1) % n;
+    return Polygon{2 * k, 2 * k + 1, 2 * next + 1, 2 * next};
+  };
+  for (int k = 0; k + 2 < n; ++k) mesh.faces.push_back(side(k));
+  Polygon top = {3, 1};
+  for (int k = n - 1; k >= 2; --k) top.push_back(2 * k + 1);
+  mesh.faces.push_back(top);
+  mesh.faces.push_back(side(n - 2));
+  mesh.faces.push_back(side(n - 1));
+  Polygon bottom;
+  for (int k = 0; k < n; ++k) bottom.push_back(2 * k);
+  mesh.faces.push_back(bottom);
+  return mesh;
+}
+
+// One triangle of a mesh's triangulation and the polygon it belongs to.
+struct SourceTriangle {
+  std::array<int, 3> corners;
+  int face;
+};
+
+int DominantAxis(const Vec3d& a, const Vec3d& b, const Vec3d& c) {
+  int axis;
+  (b - a).cross(c - a).cwiseAbs().maxCoeff(&axis);
+  return axis;
+}
+
+// Flips edges between triangles of the same group (>= 0) until each is locally Delaunay in the
+// projection of triangle t along coordinate axis[t]: the constrained Delaunay triangulation of
+// each group, with the group's outline as constraints. A cocircular tie is never flipped.
+void DelaunayFlips(const Positions<double>& vertices, const std::vector<int>& group, const std::vector<int>& axis,
+                   std::vector<std::array<int, 3>>* triangles) {
+  Vec3d lo = vertices[0], hi = vertices[0];
+  for (const Vec3d& v : vertices) lo = lo.cwiseMin(v), hi = hi.cwiseMax(v);
+  const double tie = 1e-12 * std::pow((hi - lo).norm(), 4);
+  for (int pass = 0; pass < 1000; ++pass) {
+    std::map<std::pair<int, int>, int> triangle_of_edge;  // directed edge -> triangle
+    for (size_t t = 0; t < triangles->size(); ++t) {
+      const auto& c = (*triangles)[t];
+      for (int i = 0; i < 3; ++i) triangle_of_edge[{c[i], c[(i + 1) % 3]}] = static_cast<int>(t);
+    }
+    std::vector<bool> touched(triangles->size(), false);
+    bool flipped = false;
+    for (const auto& e : triangle_of_edge) {
+      const int u = e.first.first, v = e.first.second;
+      const auto twin = triangle_of_edge.find({v, u});
+      if (u > v || twin == triangle_of_edge.end()) continue;
+      const int left = e.second, right = twin->second;
+      if (group[left] < 0 || group[left] != group[right] || touched[left] || touched[right]) continue;
+      auto third = [&](int t) {
+        for (int c : (*triangles)[t]) {
+          if (c != u && c != v) return c;
+        }
+        return -1;
+      };
+      const int w = third(left), x = third(right);
+      auto project = [&](int vertex) {
+        const Vec3d& q = vertices[vertex];
+        return Eigen::Vector2d(q[(axis[left] + 1) % 3], q[(axis[left] + 2) % 3]);
+      };
+      const Eigen::Vector2d pu = project(u), pv = project(v), pw = project(w), px = project(x);
+      const double orientation = (pv - pu).x() * (pw - pu).y() - (pv - pu).y() * (pw - pu).x();
+      Eigen::Matrix3d in_circle;
+      const Eigen::Vector2d rows[3] = {pu - px, pv - px, pw - px};
+      for (int i = 0; i < 3; ++i) in_circle.row(i) << rows[i].x(), rows[i].y(), rows[i].squaredNorm();
+      const double side = orientation > 0 ? 1 : -1;
+      auto area = [](const Eigen::Vector2d& a, const Eigen::Vector2d& b, const Eigen::Vector2d& c) {
+        return (b - a).x() * (c - a).y() - (b - a).y() * (c - a).x();
+      };
+      // Only a strictly convex quad can flip (guards against degenerate triangles).
+      if (side * area(pu, px, pw) <= 0 || side * area(px, pv, pw) <= 0) continue;
+      if (in_circle.determinant() * side <= tie) continue;
+      // (u, v, w) and (v, u, x) become (u, x, w) and (x, v, w), same winding.
+      (*triangles)[left] = {u, x, w};
+      (*triangles)[right] = {x, v, w};
+      touched[left] = touched[right] = flipped = true;
+    }
+    if (!flipped) return;
+  }
+}
+
+// Sign of the turn a -> b -> c in 2D: 1 convex (counter-clockwise), -1 concave, 0 straight.
+int TurnSign(const Eigen::Vector2d& a, const Eigen::Vector2d& b, const Eigen::Vector2d& c) {
+  const double area = (a.x() - c.x()) * (b.y() - c.y()) - (a.y() - c.y()) * (b.x() - c.x());
+  return area > 0 ? 1 : (area < 0 ? -1 : 0);
+}
+
+// Blender's BLI_polyfill_calc on a counter-clockwise 2D polygon, as the exact boolean calls it:
+// ear clipping from vertex 0 that skips to every other vertex after a cut and sweeps back and
+// forth when the next candidate is not convex. Returns #P - 2 triangles of polygon positions.
+std::vector<std::array<int, 3>> PolyFill(const std::vector<Eigen::Vector2d>& co) {
+  const int n = static_cast<int>(co.size());
+  std::vector<int> next(n), prev(n), sign(n);
+  for (int i = 0; i < n; ++i) next[i] = (i + 1) % n, prev[i] = (i + n - 1) % n;
+  int num_concave = 0;
+  for (int i = 0; i < n; ++i) {
+    sign[i] = TurnSign(co[prev[i]], co[i], co[next[i]]);
+    num_concave += sign[i] != 1;
+  }
+  auto is_ear = [&](int tip) {
+    if (num_concave == 0) return true;
+    if (sign[tip] != 1) return false;
+    const Eigen::Vector2d &v1 = co[prev[tip]], &v2 = co[tip], &v3 = co[next[tip]];
+    for (int c = next[next[tip]]; c != prev[tip]; c = next[c]) {
+      if (sign[c] == 1) continue;
+      if (TurnSign(v1, v2, co[c]) != -1 && TurnSign(v2, v3, co[c]) != -1 && TurnSign(v3, v1, co[c]) != -1) {
+        return false;
+      }
+    }
+    return true;
+  };
+  std::vector<std::array<int, 3>> triangles;
+  int remaining = n, init = 0;
+  bool reverse = false;
+  while (remaining > 3) {
+    int ear = init;
+    bool found = false;
+    for (int i = 0; i < remaining && !found; ++i) {
+      if (is_ear(ear)) found = true;
+      else ear = reverse ? prev[ear] : next[ear];
+    }
+    if (!found) ear = init;  // a degenerate polygon; the caller falls back on exact triangulation
+    const int p = prev[ear], q = next[ear];
+    triangles.push_back({p, ear, q});
+    next[p] = q;
+    prev[q] = p;
+    --remaining;
+    for (int v : {p, q}) {
+      if (sign[v] == 1) continue;
+      sign[v] = TurnSign(co[prev[v]], co[v], co[next[v]]);
+      if (sign[v] == 1) --num_concave;
+    }
+    init = reverse ? prev[p] : next[q];
+    if (sign[init] != 1) {
+      init = reverse ? prev[init] : next[init];
+      reverse = !reverse;
+    }
+  }
+  triangles.push_back({prev[init], init, next[init]});
+  return triangles;
+}
+
+// Ear clipping of a counter-clockwise 2D polygon that only cuts strictly convex ears with no
+// other vertex inside or on them (no degenerate triangles where the polygon has straight
+// corners), trying tips from vertex 1 on. Falls back on any tip for a polygon it cannot cut.
+std::vector<std::array<int, 3>> EarClip(const std::vector<Eigen::Vector2d>& co) {
+  std::vector<int> loop(co.size());
+  std::iota(loop.begin(), loop.end(), 0);
+  std::vector<std::array<int, 3>> triangles;
+  while (loop.size() > 3) {
+    const int k = static_cast<int>(loop.size());
+    int ear = 1;
+    for (int i = 1; i <= k; ++i) {
+      const int c = i % k;
+      const int a = loop[(c + k - 1) % k], b = loop[c], d = loop[(c + 1) % k];
+      if (TurnSign(co[a], co[b], co[d]) != 1) continue;
+      bool empty = true;
+      for (int j = 0; j < k && empty; ++j) {
+        const int q = loop[j];
+        if (q == a || q == b || q == d || co[q] == co[a] || co[q] == co[b] || co[q] == co[d]) continue;
+        empty = !(TurnSign(co[a], co[b], co[q]) != -1 && TurnSign(co[b], co[d], co[q]) != -1 &&
+                  TurnSign(co[d], co[a], co[q]) != -1);
+      }
+      if (empty) {
+        ear = c;
+        break;
+      }
+    }
+    triangles.push_back({loop[(ear + k - 1) % k], loop[ear], loop[(ear + 1) % k]});
+    loop.erase(loop.begin() + ear);
+  }
+  triangles.push_back({loop[0], loop[1], loop[2]});
+  return triangles;
+}
+
+// Blender's triangulation of the boolean's operands (mesh_boolean's triangulate_poly): quads
+// along the 0-2 diagonal unless that splits them badly (then 1-3), larger polygons by PolyFill in
+// the plane perpendicular to their normal; where that makes a degenerate triangle, Blender uses
+// its exact constrained Delaunay triangulation, emulated here by flips (a cocircular tie left as
+// the ear clipping made it, where Blender's choice follows its own insertion order).
+std::vector<SourceTriangle> Triangulate(const Mesh& mesh) {
+  std::vector<SourceTriangle> triangles;
+  std::vector<int> group, axis;
+  for (int f = 0; f < mesh.NumFaces(); ++f) {
+    const Polygon& loop = mesh.faces[f];
+    const int k = static_cast<int>(loop.size());
+    const Vec3d normal = FaceAreaNormal(mesh.vertices, loop).normalized();
+    int dominant;
+    normal.cwiseAbs().maxCoeff(&dominant);
+    std::vector<std::array<int, 3>> local;
+    if (k == 3) {
+      local = {{0, 1, 2}};
+    } else if (k == 4) {
+      const Vec3d& v0 = mesh.vertices[loop[0]];
+      const Vec3d d02 = mesh.vertices[loop[2]] - v0;
+      const bool flip = (mesh.vertices[loop[1]] - v0).cross(d02).dot((mesh.vertices[loop[3]] - v0).cross(d02)) > 0;
+      local = flip ? std::vector<std::array<int, 3>>{{0, 1, 3}, {1, 2, 3}}
+                   : std::vector<std::array<int, 3>>{{0, 1, 2}, {0, 2, 3}};
+    } else {
+      const Vec3d u = normal.unitOrthogonal(), v = normal.cross(u);
+      std::vector<Eigen::Vector2d> co;
+      for (int i : loop) co.emplace_back(u.dot(mesh.vertices[i]), v.dot(mesh.vertices[i]));
+      local = PolyFill(co);
+    }
+    bool degenerate = false;
+    for (const auto& t : local) {
+      const Vec3d& a = mesh.vertices[loop[t[0]]];
+      const Vec3d da = mesh.vertices[loop[t[2]]] - a, db = mesh.vertices[loop[t[2]]] - mesh.vertices[loop[t[1]]];
+      degenerate = degenerate || da.cross(db).squaredNorm() < 1e-8 * da.squaredNorm() * db.squaredNorm();
+    }
+    if (degenerate) {
+      const Vec3d u = normal.unitOrthogonal(), v = normal.cross(u);
+      std::vector<Eigen::Vector2d> co;
+      for (int i : loop) co.emplace_back(u.dot(mesh.vertices[i]), v.dot(mesh.vertices[i]));
+      local = EarClip(co);
+    }
+    for (const auto& t : local) {
+      triangles.push_back({{loop[t[0]], loop[t[1]], loop[t[2]]}, f});
+      group.push_back(degenerate ? f : -1);
+      axis.push_back(dominant);
+    }
+  }
+  std::vector<std::array<int, 3>> corners;
+  for (const SourceTriangle& t : triangles) corners.push_back(t.corners);
+  DelaunayFlips(mesh.vertices, group, axis, &corners);
+  for (size_t t = 0; t < triangles.size(); ++t) triangles[t].corners = corners[t];
+  return triangles;
+}
+
+double SegmentDistance(const Vec3d& p, const Vec3d& a, const Vec3d& b) {
+  const Vec3d ab = b - a;
+  const double t = std::clamp((p - a).dot(ab) / std::max(ab.squaredNorm(), 1e-300), 0.0, 1.0);
+  return (a + t * ab - p).norm();
+}
+
+// Whether p lies on triangle abc (within `tolerance`); sets *unit_normal.
+bool OnTriangle(const Vec3d& p, const Vec3d& a, const Vec3d& b, const Vec3d& c, double tolerance,
+                Vec3d* unit_normal) {
+  const Vec3d n = (b - a).cross(c - a);
+  if (n.norm() <= 1e-300) return false;
+  *unit_normal = n.normalized();
+  if (std::abs(unit_normal->dot(p - a)) > tolerance) return false;
+  const Vec3d corners[3] = {a, b, c};
+  for (int i = 0; i < 3; ++i) {
+    const Vec3d& u = corners[i];
+    const Vec3d& v = corners[(i + 1) % 3];
+    if ((v - u).cross(p - u).dot(*unit_normal) / (v - u).norm() < -tolerance) return false;
+  }
+  return true;
+}
+
+// Edge-plane crossing: the point of line (edge_from, edge_to) on the plane through a, b, c.
+template <typename T>
+Vec3<T> Crossing(const Vec3<T>& edge_from, const Vec3<T>& edge_to, const Vec3<T>& a, const Vec3<T>& b,
+                 const Vec3<T>& c) {
+  const Vec3<T> n = (b - a).cross(c - a);
+  const T t = n.dot(a - edge_from) / n.dot(edge_to - edge_from);
+  return edge_from + t * (edge_to - edge_from);
+}
+
+}  // namespace
+
+BooleanOp::BooleanOp(const Json& params) {
+  ParamReader reader(params);
+  difference_ = reader.Word("operation", kOperations) == "DIFFERENCE";
+  primitive_ = reader.Word("primitive", kPrimitives);
+  const Vec3d size = reader.Vector3("size", 1e-6, 1e6);
+  const Vec3d rotation_deg = reader.Vector3("rotation_deg", -3600, 3600, Vec3d::Zero());
+  const Vec3d location = reader.Vector3("location", -1e6, 1e6, Vec3d::Zero());
+  reader.Finish();
+  const char* axes[3] = {"x", "y", "z"};
+  for (int i = 0; i < 3; ++i) AddParam(std::string("size_") + axes[i], 1e-6, 1e6, size[i], size[i]);
+  for (int i = 0; i < 3; ++i) {
+    const double radians = DegToRad(rotation_deg[i]);
+    AddParam(std::string("rotation_") + axes[i], -4 * kPi, 4 * kPi, radians, radians);
+  }
+  for (int i = 0; i < 3; ++i) AddParam(std::string("location_") + axes[i], -1e6, 1e6, location[i], location[i]);
+  template_ = primitive_ == "cube" ? MakeCube(1.0) : MakePrism(Segments(primitive_));
+}
+
+template <typename T>
+Vec3<T> BooleanOp::PrimitiveVertex(const T* p, const Eigen::Matrix<T, 3, 3>& rotation, int v) const {
+  const Vec3<T> scaled = template_.vertices[v].cast<T>().cwiseProduct(Vec3<T>(p[0], p[1], p[2]));
+  return rotation * scaled + Vec3<T>(p[6], p[7], p[8]);
+}
+
+void BooleanOp::Prepare(const Mesh& input) {
+  input_faces_ = input.faces;
+  if (input.faces.empty()) throw FieldError("operation", "the input mesh has no faces");
+  // A closed manifold has each directed edge once and its reverse once.
+  std::map<std::pair<int, int>, int> directed;
+  for (const Polygon& f : input.faces) {
+    for (size_t i = 0; i < f.size(); ++i) ++directed[{f[i], f[(i + 1) % f.size()]}];
+  }
+  for (const auto& e : directed) {
+    const auto reverse = directed.find({e.first.second, e.first.first});
+    if (e.second != 1 || reverse == directed.end() || reverse->second != 1) {
+      throw FieldError("operation", "the input mesh is not a closed, consistently oriented manifold");
+    }
+  }
+
+  // Both operands as triangle soups; the primitive's vertices follow the input's.
+  Mesh primitive = template_;
+  const Eigen::Matrix3d rotation = EulerXYZToMatrix(params_[3], params_[4], params_[5]);
+  for (int v = 0; v < primitive.NumVertices(); ++v) {
+    primitive.vertices[v] = PrimitiveVertex(params_.data(), rotation, v);
+  }
+  const std::vector<SourceTriangle> input_triangles = Triangulate(input);
+  const std::vector<SourceTriangle> primitive_triangles = Triangulate(primitive);
+  TriangleSoup a, b, result;
+  a.vertices = input.vertices;
+  for (const SourceTriangle& t : input_triangles) a.triangles.push_back(t.corners);
+  b.vertices = primitive.vertices;
+  for (const SourceTriangle& t : primitive_triangles) b.triangles.push_back(t.corners);
+  const std::string problem =
+      CgalBoolean(a, b, difference_ ? BooleanKind::kDifference : BooleanKind::kUnion, &result);
+  if (!problem.empty()) throw FieldError("operation", problem);
+
+  // Provenance of CGAL's vertices, recovered geometrically (CGAL's points are its exact ones
+  // rounded to double).
+  Vec3d lo = input.vertices[0], hi = input.vertices[0];
+  for (const Vec3d& v : a.vertices) lo = lo.cwiseMin(v), hi = hi.cwiseMax(v);
+  for (const Vec3d& v : b.vertices) lo = lo.cwiseMin(v), hi = hi.cwiseMax(v);
+  const double tolerance = 1e-9 * std::max((hi - lo).norm(), 1e-12);
+  const TriangleSoup* operands[2] = {&a, &b};
+  std::vector<std::pair<int, int>> edges[2];  // unique triangulation edges of each operand
+  for (int m = 0; m < 2; ++m) {
+    std::set<std::pair<int, int>> seen;
+    for (const auto& t : operands[m]->triangles) {
+      for (int i = 0; i < 3; ++i) {
+        const std::pair<int, int> e = std::minmax(t[i], t[(i + 1) % 3]);
+        if (seen.insert(e).second) edges[m].push_back(e);
+      }
+    }
+  }
+  // Only edges and triangles within the other operand's bounding box can take part in crossings.
+  Eigen::AlignedBox3d boxes[2];
+  for (int m = 0; m < 2; ++m) {
+    for (const Vec3d& v : operands[m]->vertices) boxes[m].extend(v);
+    boxes[m].extend(boxes[m].min() - Vec3d::Constant(tolerance)).extend(boxes[m].max() + Vec3d::Constant(tolerance));
+  }
+  auto near_other = [&](int m, std::initializer_list<int> corners) {
+    Eigen::AlignedBox3d box;
+    for (int v : corners) box.extend(operands[m]->vertices[v]);
+    return box.intersects(boxes[1 - m]);
+  };
+  std::vector<std::array<int, 3>> near_triangles[2];
+  for (int m = 0; m < 2; ++m) {
+    edges[m].erase(std::remove_if(edges[m].begin(), edges[m].end(),
+                                  [&](const std::pair<int, int>& e) { return !near_other(m, {e.first, e.second}); }),
+                   edges[m].end());
+    for (const auto& t : operands[m]->triangles) {
+      if (near_other(m, {t[0], t[1], t[2]})) near_triangles[m].push_back(t);
+    }
+  }
+  std::map<std::array<double, 3>, int> vertex_at[2];  // exact coordinates -> operand vertex
+  for (int m = 0; m < 2; ++m) {
+    for (size_t v = 0; v < operands[m]->vertices.size(); ++v) {
+      const Vec3d& q = operands[m]->vertices[v];
+      vertex_at[m].insert({{q.x(), q.y(), q.z()}, static_cast<int>(v)});
+    }
+  }
+  std::vector<Source> sources(result.vertices.size());
+  for (size_t r = 0; r < result.vertices.size(); ++r) {
+    const Vec3d& p = result.vertices[r];
+    Source& s = sources[r];
+    s.vertex = -1;
+    for (int m = 0; m < 2 && s.vertex < 0; ++m) {
+      const auto it = vertex_at[m].find({p.x(), p.y(), p.z()});
+      if (it != vertex_at[m].end()) {
+        s.kind = m == 0 ? Source::kInput : Source::kPrimitive;
+        s.vertex = it->second;
+      }
+    }
+    if (s.vertex >= 0) continue;
+    // A crossing: the best conditioned (edge of one operand, triangle of the other) through p.
+    double best = 1e-6;
+    for (int m = 0; m < 2; ++m) {
+      const TriangleSoup& mine = *operands[m];
+      const TriangleSoup& other = *operands[1 - m];
+      for (const auto& e : edges[m]) {
+        const Vec3d& from = mine.vertices[e.first];
+        const Vec3d& to = mine.vertices[e.second];
+        if (SegmentDistance(p, from, to) > tolerance) continue;
+        const Vec3d direction = (to - from).normalized();
+        for (const auto& t : near_triangles[1 - m]) {
+          Vec3d n;
+          if (!OnTriangle(p, other.vertices[t[0]], other.vertices[t[1]], other.vertices[t[2]], tolerance, &n)) continue;
+          const double conditioning = std::abs(n.dot(direction));
+          if (conditioning > best) {
+            best = conditioning;
+            s.kind = Source::kCrossing;
+            s.edge_on_primitive = m == 1;
+            s.edge = {e.first, e.second};
+            s.plane = t;
+          }
+        }
+      }
+    }
+    if (best <= 1e-6) throw FieldError("operation", "internal: an intersection point of the boolean has no source");
+  }
+
+  // Source polygon of each result triangle: that of the operand triangle it is (uncut), else the
+  // one its centroid lies on, parallel to it; the input mesh wins where both operands overlap.
+  const int num_result_triangles = static_cast<int>(result.triangles.size());
+  std::vector<int> source_face(num_result_triangles, -1);      // input's, then primitive's
+  std::vector<int> source_triangle(num_result_triangles, -1);  // input's, then primitive's
+  std::map<std::array<int, 3>, int> triangle_with_corners[2];
+  std::vector<bool> near[2];
+  for (int m = 0; m < 2; ++m) {
+    const std::vector<SourceTriangle>& triangles = m == 0 ? input_triangles : primitive_triangles;
+    for (size_t k = 0; k < triangles.size(); ++k) {
+      std::array<int, 3> c = triangles[k].corners;
+      near[m].push_back(near_other(m, {c[0], c[1], c[2]}));
+      std::sort(c.begin(), c.end());
+      triangle_with_corners[m][c] = static_cast<int>(k);
+    }
+  }
+  for (int r = 0; r < num_result_triangles; ++r) {
+    const auto& t = result.triangles[r];
+    for (int m = 0; m < 2 && source_face[r] < 0; ++m) {
+      const Source::Kind kind = m == 0 ? Source::kInput : Source::kPrimitive;
+      std::array<int, 3> corners;
+      bool all_original = true;
+      for (int i = 0; i < 3; ++i) {
+        all_original = all_original && sources[t[i]].kind == kind;
+        corners[i] = sources[t[i]].vertex;
+      }
+      if (!all_original) continue;
+      std::sort(corners.begin(), corners.end());
+      const auto it = triangle_with_corners[m].find(corners);
+      if (it == triangle_with_corners[m].end()) continue;
+      const std::vector<SourceTriangle>& triangles = m == 0 ? input_triangles : primitive_triangles;
+      source_face[r] = (m == 0 ? 0 : input.NumFaces()) + triangles[it->second].face;
+      source_triangle[r] = (m == 0 ? 0 : static_cast<int>(input_triangles.size())) + it->second;
+    }
+    if (source_face[r] >= 0) continue;
+    const Vec3d& p0 = result.vertices[t[0]];
+    const Vec3d& p1 = result.vertices[t[1]];
+    const Vec3d& p2 = result.vertices[t[2]];
+    const Vec3d centroid = (p0 + p1 + p2) / 3;
+    const Vec3d normal = (p1 - p0).cross(p2 - p0).normalized();
+    double best = 1 - 1e-6;
+    for (int m = 0; m < 2 && source_face[r] < 0; ++m) {
+      const TriangleSoup& operand = *operands[m];
+      const std::vector<SourceTriangle>& triangles = m == 0 ? input_triangles : primitive_triangles;
+      for (size_t k = 0; k < triangles.size(); ++k) {
+        if (!near[m][k]) continue;
+        const auto& c = triangles[k].corners;
+        Vec3d n;
+        const Vec3d& c0 = operand.vertices[c[0]];
+        if (!OnTriangle(centroid, c0, operand.vertices[c[1]], operand.vertices[c[2]], tolerance, &n)) continue;
+        if (std::abs(n.dot(normal)) > best) {
+          best = std::abs(n.dot(normal));
+          source_face[r] = (m == 0 ? 0 : input.NumFaces()) + triangles[k].face;
+          source_triangle[r] = (m == 0 ? 0 : static_cast<int>(input_triangles.size())) + static_cast<int>(k);
+        }
+      }
+    }
+    if (source_face[r] < 0) throw FieldError("operation", "internal: a face of the boolean has no source");
+  }
+
+  // Blender retriangulates each operand triangle with a constrained Delaunay triangulation; CGAL's
+  // retriangulation need not be Delaunay, and the merge below depends on the triangles.
+  std::vector<int> dominant_axis(num_result_triangles);
+  for (int r = 0; r < num_result_triangles; ++r) {
+    const int k = source_triangle[r];
+    const bool on_input = k < static_cast<int>(input_triangles.size());
+    const TriangleSoup& operand = on_input ? a : b;
+    const auto& c = (on_input ? input_triangles[k] : primitive_triangles[k - input_triangles.size()]).corners;
+    dominant_axis[r] = DominantAxis(operand.vertices[c[0]], operand.vertices[c[1]], operand.vertices[c[2]]);
+  }
+  DelaunayFlips(result.vertices, source_triangle, dominant_axis, &result.triangles);
+
+  // Merge the triangles of each source polygon (see the header), then dissolve new vertices
+  // that only continue a straight chain between the same two polygons.
+  std::vector<Polygon> polygons(num_result_triangles);
+  std::vector<int> parent(num_result_triangles);
+  for (int r = 0; r < num_result_triangles; ++r) {
+    polygons[r].assign(result.triangles[r].begin(), result.triangles[r].end());
+    parent[r] = r;
+  }
+  auto find = [&parent](int x) {
+    while (parent[x] != x) x = parent[x] = parent[parent[x]];
+    return x;
+  };
+  std::map<std::pair<int, int>, int> triangle_of_edge;  // directed edge -> result triangle
+  for (int r = 0; r < num_result_triangles; ++r) {
+    for (int i = 0; i < 3; ++i) triangle_of_edge[{result.triangles[r][i], result.triangles[r][(i + 1) % 3]}] = r;
+  }
+  struct Candidate {
+    double length_squared;
+    int from, to;  // directed edge of triangle `left`
+    int left, right;
+  };
+  std::vector<Candidate> candidates;
+  for (const auto& e : triangle_of_edge) {
+    const auto twin = triangle_of_edge.find({e.first.second, e.first.first});
+    if (e.first.first > e.first.second || twin == triangle_of_edge.end()) continue;
+    const int left = e.second, right = twin->second;
+    if (source_face[left] != source_face[right]) continue;
+    const double length_squared = (result.vertices[e.first.first] - result.vertices[e.first.second]).squaredNorm();
+    candidates.push_back({length_squared, e.first.first, e.first.second, left, right});
+  }
+  std::stable_sort(candidates.begin(), candidates.end(), [](const Candidate& x, const Candidate& y) {
+    return x.length_squared > y.length_squared;
+  });
+  for (const Candidate& c : candidates) {
+    const int left = find(c.left), right = find(c.right);
+    if (left == right) continue;
+    Polygon& l = polygons[left];
+    Polygon& r = polygons[right];
+    int shared = 0;
+    for (int v : l) shared += std::count(r.begin(), r.end(), v);
+    if (shared != 2) continue;  // the merge would enclose a hole or pinch a vertex
+    // l runs ... from -> to ..., r runs ... to -> from ...: join them along the edge.
+    std::rotate(l.begin(), std::find(l.begin(), l.end(), c.to), l.end());      // to ... from
+    std::rotate(r.begin(), std::find(r.begin(), r.end(), c.from), r.end());    // from ... to
+    l.insert(l.end(), r.begin() + 1, r.end() - 1);
+    r.clear();
+    parent[right] = left;
+  }
+  std::vector<Polygon> merged;
+  for (int r = 0; r < num_result_triangles; ++r) {
+    if (find(r) != r) continue;
+    // A face the other operand left whole keeps its loop from its first corner, as in Blender
+    // (which matters to a later boolean's triangulation of a non-planar polygon).
+    Polygon& f = polygons[r];
+    const bool on_input = source_face[r] < input.NumFaces();
+    const Polygon& source = on_input ? input.faces[source_face[r]] : primitive.faces[source_face[r] - input.NumFaces()];
+    const Source::Kind kind = on_input ? Source::kInput : Source::kPrimitive;
+    if (f.size() == source.size()) {
+      const auto first = std::find_if(f.begin(), f.end(), [&](int v) {
+        return sources[v].kind == kind && sources[v].vertex == source[0];
+      });
+      if (first != f.end()) std::rotate(f.begin(), first, f.end());
+    }
+    merged.push_back(f);
+  }
+  const int num_result = static_cast<int>(result.vertices.size());
+  std::vector<std::pair<int, int>> neighbours(num_result, {-1, -1});
+  std::vector<bool> dissolve(num_result);
+  for (int v = 0; v < num_result; ++v) dissolve[v] = sources[v].kind == Source::kCrossing;
+  for (const Polygon& f : merged) {
+    const int k = static_cast<int>(f.size());
+    for (int i = 0; i < k; ++i) {
+      const int v = f[i];
+      const std::pair<int, int> around = std::minmax(f[(i + k - 1) % k], f[(i + 1) % k]);
+      if (neighbours[v].first < 0) neighbours[v] = around;
+      else if (neighbours[v] != around) dissolve[v] = false;
+    }
+  }
+  for (int v = 0; v < num_result; ++v) {
+    if (!dissolve[v] || neighbours[v].first < 0) continue;
+    // Only a straight continuation (Blender's test: the turn's cosine within 1e-4 of 1); a
+    // crossing where the chain bends, as across the diagonal of a non-planar quad, is kept.
+    const Vec3d& p = result.vertices[v];
+    const Vec3d in = p - result.vertices[neighbours[v].first];
+    const Vec3d out = result.vertices[neighbours[v].second] - p;
+    const double cosine = in.dot(out) / std::max(in.norm() * out.norm(), 1e-300);
+    dissolve[v] = cosine > 1 - 1e-4;
+  }
+  std::vector<int> output_index(num_result, -1);
+  sources_.clear();
+  output_faces_.clear();
+  for (Polygon f : merged) {
+    f.erase(std::remove_if(f.begin(), f.end(), [&dissolve](int v) { return dissolve[v]; }), f.end());
+    for (int& v : f) {
+      if (output_index[v] < 0) {
+        output_index[v] = static_cast<int>(sources_.size());
+        sources_.push_back(sources[v]);
+      }
+      v = output_index[v];
+    }
+    output_faces_.push_back(f);
+  }
+  num_output_vertices_ = static_cast<int>(sources_.size());
+  if (output_faces_.empty()) {
+    throw FieldError("operation", "the result is empty (the primitive contains the whole mesh)");
+  }
+}
+
+const std::vector<Polygon>& BooleanOp::OutputFaces(double gate) const {
+  return gate < kGateSwitch ? input_faces_ : output_faces_;
+}
+
+template <typename T>
+void BooleanOp::Apply(const T* p, const T& gate, const Positions<T>& in, Positions<T>* out) const {
+  if (Scalar(gate) < kGateSwitch) {
+    *out = in;
+    return;
+  }
+  const Eigen::Matrix<T, 3, 3> rotation = EulerXYZToMatrix<T>(p[3], p[4], p[5]);
+  out->resize(sources_.size());
+  for (size_t i = 0; i < sources_.size(); ++i) {
+    const Source& s = sources_[i];
+    if (s.kind == Source::kInput) {
+      (*out)[i] = in[s.vertex];
+    } else if (s.kind == Source::kPrimitive) {
+      (*out)[i] = PrimitiveVertex(p, rotation, s.vertex);
+    } else if (s.edge_on_primitive) {
+      (*out)[i] = Crossing<T>(PrimitiveVertex(p, rotation, s.edge[0]), PrimitiveVertex(p, rotation, s.edge[1]),
+                              in[s.plane[0]], in[s.plane[1]], in[s.plane[2]]);
+    } else {
+      (*out)[i] = Crossing<T>(in[s.edge[0]], in[s.edge[1]], PrimitiveVertex(p, rotation, s.plane[0]),
+                              PrimitiveVertex(p, rotation, s.plane[1]), PrimitiveVertex(p, rotation, s.plane[2]));
+    }
+  }
+}
+
+template void BooleanOp::Apply<double>(const double*, const double&, const Positions<double>&,
+                                       Positions<double>*) const;
+template void BooleanOp::Apply<JetT>(const JetT*, const JetT&, const Positions<JetT>&, Positions<JetT>*) const;
+
+Json BooleanOp::ParamsToJson() const {
+  const Vec3d rotation(params_[3], params_[4], params_[5]);
+  return {{"operation", kOperations[difference_ ? 1 : 0]},
+          {"primitive", primitive_},
+          {"size", ToJson(Vec3d(params_[0], params_[1], params_[2]))},
+          {"rotation_deg", ToJson(rotation * (180.0 / kPi))},
+          {"location", ToJson(Vec3d(params_[6], params_[7], params_[8]))}};
+}
+
+std::string BooleanOp::BlenderCode() const {
+  const std::string create =
+      primitive_ == "cube"
+          ? "bmesh.ops.create_cube(bm, size=1.0)\n"
+          : "bmesh.ops.create_cone(bm, cap_ends=True, cap_tris=False, segments=" +
+                std::to_string(Segments(primitive_)) + ", radius1=0.5, radius2=0.5, depth=1.0)\n";
+  return "cutter_mesh = bpy.data.meshes.new(" + PyWord("cutter") + ")\n"
+         "bm = bmesh.new()\n" + create +
+         "bmesh.ops.transform(bm, verts=bm.verts, matrix=Matrix.Translation(" +
+         PyVec(Vec3d(params_[6], params_[7], params_[8])) + ") @ Euler(" +
+         PyVec(Vec3d(params_[3], params_[4], params_[5])) + ", 'XYZ').to_matrix().to_4x4() @ Matrix.Diagonal(" +
+         PyVec(Vec3d(params_[0], params_[1], params_[2])) + ").to_4x4())\n"
+         "bm.to_mesh(cutter_mesh)\n"
+         "bm.free()\n"
+         "cutter = bpy.data.objects.new(" + PyWord("cutter") + ", cutter_mesh)\n"
+         "bpy.context.scene.collection.objects.link(cutter)\n"
+         "cutter.hide_set(True)\n"
+         "cutter.hide_render = True\n"
+         "m = obj.modifiers.new(" + PyWord("Boolean") + ", " + PyWord("BOOLEAN") + ")\n"
+         "m.operation = " + PyWord(kOperations[difference_ ? 1 : 0]) + "\n"
+         "m.solver = " + PyWord("EXACT") + "\n"
+         "m.use_self = False\n"
+         "m.use_hole_tolerant = False\n"
+         "m.object = cutter\n";
+}
+
+}  // namespace opgraph
