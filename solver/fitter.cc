@@ -80,7 +80,8 @@ Fitter::Fitter(const Target& target, Sequence* sequence, const FitterOptions& op
     : target_(target), sequence_(sequence), options_(options) {
   const std::string problem = options.Check();
   if (!problem.empty()) throw std::invalid_argument("fitter options: " + problem);
-  program_ = std::make_unique<Program>(sequence, options.fit_gates);
+  free_gates_ = options.fit_gates;
+  program_ = std::make_unique<Program>(sequence, free_gates_);
   trust_region_radius_ = options.initial_trust_region_radius;
 }
 
@@ -341,39 +342,54 @@ double Fitter::Solve(const Correspondences& correspondences, double sparsity_wei
   return EvaluateObjective(*program_, objective, nullptr, &r, &jac);
 }
 
-bool Fitter::ReproducesProgram() const {
+Fitter::Reproduction Fitter::CheckReproduction() const {
   try {
     Sequence copy = ParseSequence(SequenceToJson(*sequence_));
     for (size_t k = 0; k < copy.ops.size(); ++k) copy.gates[k] = program_->Gate(static_cast<int>(k));
     const std::vector<Mesh> steps = EvaluateSequence(&copy);
     const Mesh& result = steps.empty() ? copy.StartMesh() : steps.back();
-    if (result.faces != program_->faces() || result.vertices.size() != program_->positions().size()) return false;
-    const double tolerance = 1e-9 / target_.scale();
-    for (size_t v = 0; v < result.vertices.size(); ++v) {
-      if (!((result.vertices[v] - program_->positions()[v]).norm() <= tolerance)) return false;
+    if (result.faces != program_->faces() || result.vertices.size() != program_->positions().size()) {
+      return Reproduction::kDifferent;
     }
-    return true;
+    const double tolerance = 1e-7 / target_.scale();
+    for (size_t v = 0; v < result.vertices.size(); ++v) {
+      if (!((result.vertices[v] - program_->positions()[v]).norm() <= tolerance)) return Reproduction::kDifferent;
+    }
+    return Reproduction::kSame;
   } catch (const std::exception&) {
-    return false;
+    return Reproduction::kFails;
   }
+}
+
+bool Fitter::ResolveTopology() {
+  const Reproduction reproduction = CheckReproduction();
+  if (reproduction != Reproduction::kDifferent) return reproduction == Reproduction::kSame;
+  // The copy evaluated with these parameters and gates, so the sequence itself will too.
+  const std::vector<double> logits = program_->logits();
+  program_->StoreGates();
+  program_ = std::make_unique<Program>(sequence_, free_gates_);
+  program_->set_logits(logits);  // exact gates (the constructor clamps them)
+  program_->PrepareForEvaluation(false, true);
+  return true;
 }
 
 double Fitter::RunStage(double sparsity_weight, FitSummary* summary) {
   sparsity_weight_ = sparsity_weight;
-  const std::vector<ProgramBlock>& blocks = program_->blocks();
+  // The program may be rebuilt (ResolveTopology) with the same block layout, so blocks are
+  // looked up afresh.
   auto snapshot = [&]() {
     std::vector<double> values;
-    for (const ProgramBlock& b : blocks) values.insert(values.end(), b.data, b.data + b.size);
+    for (const ProgramBlock& b : program_->blocks()) values.insert(values.end(), b.data, b.data + b.size);
     return values;
   };
   auto restore = [&](const std::vector<double>& values) {
     size_t k = 0;
-    for (const ProgramBlock& b : blocks) {
+    for (const ProgramBlock& b : program_->blocks()) {
       for (int i = 0; i < b.size; ++i) b.data[i] = values[k++];
     }
   };
   // Start inside the bounds (Ceres needs a feasible start).
-  for (const ProgramBlock& b : blocks) {
+  for (const ProgramBlock& b : program_->blocks()) {
     if (b.is_gate) continue;
     const std::vector<ParamSpec>& specs = sequence_->ops[b.op]->specs();
     for (int i = 0; i < b.size; ++i) b.data[i] = std::min(specs[i].upper, std::max(specs[i].lower, b.data[i]));
@@ -382,6 +398,10 @@ double Fitter::RunStage(double sparsity_weight, FitSummary* summary) {
   std::vector<double> best_values = snapshot(), best_reproducible_values;
   for (int update = 0; update < options_.max_outer_iterations; ++update) {
     const double started = Now();
+    // Discrete choices that depend on the parameters (a Boolean's intersection, the elements a
+    // target selects) are re-resolved at each update; where the sequence no longer evaluates,
+    // the last topology is kept and the point cannot be the result.
+    const bool reproducible = ResolveTopology();
     Correspondences correspondences;
     // The same seed every update: samples move smoothly with the shape, so losses compare.
     BuildCorrespondences(options_.seed, &correspondences);
@@ -400,7 +420,7 @@ double Fitter::RunStage(double sparsity_weight, FitSummary* summary) {
       // The result must be a sequence that, as written, rebuilds the fitted mesh (its
       // geometric targets resolve to the same elements); the path there may pass through
       // parameters where they do not (e.g. from a start where they do not).
-      if (fresh < best_reproducible && ReproducesProgram()) {
+      if (fresh < best_reproducible && reproducible) {
         best_reproducible = fresh;
         best_reproducible_values = best_values;
       }
@@ -427,6 +447,7 @@ double Fitter::RunStage(double sparsity_weight, FitSummary* summary) {
     best_values = best_reproducible_values;
   }
   restore(best_values);
+  ResolveTopology();
   program_->PrepareForEvaluation(false, true);
   return best;
 }
@@ -467,7 +488,8 @@ void Fitter::Finalise(FitSummary* summary) {
   }
   program_.reset();
   *sequence_ = std::move(next);
-  program_ = std::make_unique<Program>(sequence_, /*free_gates=*/false);
+  free_gates_ = false;
+  program_ = std::make_unique<Program>(sequence_, free_gates_);
   if (options_.progress) {
     *options_.progress << "fit: finalised gates (" << summary->pruned_ops.size() << " ops pruned); polishing\n";
   }

@@ -12,8 +12,10 @@
 // and a last solve polishes the parameters with gates fixed, so the result is exportable to
 // Blender.
 //
-// The result is the best parameter set at which the sequence, as written, rebuilds the fitted
-// mesh (geometric targets such as face boxes resolve to the same elements), when there is one.
+// Discrete choices are made by the topology passes at the start parameters and re-made at each
+// correspondence update when the parameters have moved them (a Boolean's intersection, the
+// elements a geometric target selects); the result is the best parameter set at which the
+// written sequence evaluates, when there is one.
 //
 // Deterministic for a given seed (single-threaded residual evaluation by default).
 #pragma once
@@ -114,9 +116,13 @@ class Fitter {
   double RunStage(double sparsity_weight, FitSummary* summary);
   double Solve(const Correspondences& correspondences, double sparsity_weight, FitSummary* summary);
   void Finalise(FitSummary* summary);
-  // Whether the sequence as it would be written (re-parsed, targets re-resolved) rebuilds the
-  // program's current output.
-  bool ReproducesProgram() const;
+  // Whether the sequence as it would be written (re-parsed, topology passes re-run) rebuilds
+  // the program's current output, gives another topology or output, or fails to evaluate.
+  enum class Reproduction { kSame, kDifferent, kFails };
+  Reproduction CheckReproduction() const;
+  // Rebuilds the program when the topology passes now resolve differently. Returns whether the
+  // program then matches the sequence (false: the sequence does not evaluate here).
+  bool ResolveTopology();
 
   const Target& target_;
   Sequence* sequence_;
@@ -124,7 +130,8 @@ class Fitter {
   std::unique_ptr<Program> program_;
   double sparsity_weight_ = 0;
   double trust_region_radius_ = 0;
-  bool hold_params_ = false, hold_gates_ = false;  // blocks held constant in the current stage
+  bool hold_params_ = false, hold_gates_ = false;
+  bool free_gates_ = false;  // blocks held constant in the current stage
   uint64_t update_count_ = 0;
   double start_time_ = 0;
 };

@@ -48,6 +48,9 @@ class Program : public ceres::EvaluationCallback {
   bool GateIsFree(int op) const { return gate_block_[op] >= 0; }
   // Writes the current gates into the sequence.
   void StoreGates() const;
+  // Gate logits, one per op (meaningful for free gates).
+  const std::vector<double>& logits() const { return logits_; }
+  void set_logits(const std::vector<double>& logits) { logits_ = logits; values_ready_ = jacobian_ready_ = false; }
 
   // Evaluates at the current parameter values. Returns false when a position is not finite.
   bool EvaluateValues();
