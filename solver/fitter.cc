@@ -367,6 +367,7 @@ bool Fitter::ResolveTopology() {
   // The copy evaluated with these parameters and gates, so the sequence itself will too.
   const std::vector<double> logits = program_->logits();
   program_->StoreGates();
+  retired_jacobian_evaluations_ += program_->num_jacobian_evaluations();
   program_ = std::make_unique<Program>(sequence_, free_gates_);
   program_->set_logits(logits);  // exact gates (the constructor clamps them)
   program_->PrepareForEvaluation(false, true);
@@ -486,6 +487,7 @@ void Fitter::Finalise(FitSummary* summary) {
     // A later op's target depends on a pruned one: keep them all (folded, near identity).
     next = ParseSequence(folded);
   }
+  retired_jacobian_evaluations_ += program_->num_jacobian_evaluations();
   program_.reset();
   *sequence_ = std::move(next);
   free_gates_ = false;
@@ -499,9 +501,8 @@ void Fitter::Finalise(FitSummary* summary) {
 FitSummary Fitter::Fit() {
   FitSummary summary;
   start_time_ = Now();
-  const int jacobians_before = program_->num_jacobian_evaluations();
+  retired_jacobian_evaluations_ = -program_->num_jacobian_evaluations();  // count from here
   summary.initial_loss = CurrentLoss();
-  int jacobians = 0;
   if (options_.fit_gates) {
     // Stage 1: parameters with the gates held; stage 2: gates under the sparsity weight with
     // the parameters held (a gate and its op's parameters trade off exactly, so fitting both
@@ -512,18 +513,15 @@ FitSummary Fitter::Fit() {
     hold_params_ = true;
     RunStage(options_.gate_sparsity_weight, &summary);
     hold_params_ = false;
-    jacobians += program_->num_jacobian_evaluations() - jacobians_before;
     Finalise(&summary);
-    jacobians += program_->num_jacobian_evaluations();
   } else {
     RunStage(0.0, &summary);
     program_->StoreGates();
-    jacobians += program_->num_jacobian_evaluations() - jacobians_before;
   }
   sparsity_weight_ = 0;
   summary.final_loss = CurrentLoss();
   summary.history.push_back({Now() - start_time_, summary.inner_iterations, summary.final_loss});
-  summary.jacobian_evaluations = jacobians;
+  summary.jacobian_evaluations = retired_jacobian_evaluations_ + program_->num_jacobian_evaluations();
   summary.seconds = Now() - start_time_;
   return summary;
 }

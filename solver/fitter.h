@@ -131,7 +131,8 @@ class Fitter {
   double sparsity_weight_ = 0;
   double trust_region_radius_ = 0;
   bool hold_params_ = false, hold_gates_ = false;
-  bool free_gates_ = false;  // blocks held constant in the current stage
+  bool free_gates_ = false;
+  int retired_jacobian_evaluations_ = 0;  // by programs replaced during the fit  // blocks held constant in the current stage
   uint64_t update_count_ = 0;
   double start_time_ = 0;
 };
