@@ -188,6 +188,8 @@ int main(int argc, char** argv) {
   }
   std::string log;
   for (const std::string& line : recovered.decisions) log += line + "\n";
+  // Two independent sample sets of the target itself: Chamfer below this is within sampling noise.
+  if (!target->is_cloud()) metrics["shape"]["sampling_noise_floor"] = SamplingNoiseFloor(target->shape(), metrics_options);
 
   try {
     WriteSequenceOutputs(outputs, out_dir, /*write_steps=*/true,

@@ -3,6 +3,7 @@
 #include <cmath>
 #include <limits>
 #include <map>
+#include <stdexcept>
 #include <memory>
 
 #include <Eigen/Geometry>
@@ -12,7 +13,9 @@
 
 namespace opgraph {
 
-bool MetricsOptions::Check() const { return num_samples > 0; }
+std::string MetricsOptions::Check() const {
+  return num_samples > 0 && num_samples <= 100000000 ? "" : "num_samples must be in [1, 1e8]";
+}
 
 void UnitBoxTransform(const Mesh& mesh, Vec3d* centre, double* scale) {
   Eigen::AlignedBox3d box;
@@ -96,6 +99,8 @@ double F1(double precision, double recall) {
 }  // namespace
 
 ShapeMetrics ComputeShapeMetrics(const Mesh& output, const Mesh& target, const MetricsOptions& options) {
+  const std::string problem = options.Check();
+  if (!problem.empty()) throw std::invalid_argument("metrics options: " + problem);
   Vec3d centre;
   double scale;
   UnitBoxTransform(target, &centre, &scale);

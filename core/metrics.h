@@ -13,6 +13,7 @@
 #pragma once
 
 #include <cstdint>
+#include <string>
 
 #include "core/mesh.h"
 
@@ -42,10 +43,12 @@ struct WiringMetrics {
 struct MetricsOptions {
   int num_samples = 10000;  // per shape
   uint64_t seed = 1;
-  bool Check() const;
+  // Empty when valid, else the problem.
+  std::string Check() const;
 };
 
-// `output` must have faces; `target` may be a point cloud (no faces).
+// `output` must have faces; `target` may be a point cloud (no faces). Throws
+// std::invalid_argument on invalid options.
 ShapeMetrics ComputeShapeMetrics(const Mesh& output, const Mesh& target, const MetricsOptions& options = {});
 
 // The sampling noise floor: the target against an independent resampling of itself

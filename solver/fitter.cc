@@ -29,6 +29,7 @@ std::string FitterOptions::Check() const {
   if (!(prune_gate > 0 && prune_gate < 1)) return "prune_gate must be in (0, 1)";
   if (max_outer_iterations < 1 || max_inner_iterations < 1 || adam_iterations < 1) return "iteration limits must be >= 1";
   if (!(adam_learning_rate > 0)) return "adam_learning_rate must be > 0";
+  if (!(initial_trust_region_radius > 0)) return "initial_trust_region_radius must be > 0";
   if (!(min_relative_improvement >= 0)) return "min_relative_improvement must be >= 0";
   if (num_threads < 1) return "num_threads must be >= 1";
   for (const ParameterRangeRule& rule : domain_rules) {
@@ -69,6 +70,7 @@ struct Objective {
     std::unique_ptr<ceres::CostFunction> cost;
     const ceres::LossFunction* loss;
     std::vector<double*> blocks;
+    std::vector<int> columns;  // first Program Jacobian column of each block
   };
   std::vector<Term> terms;
   std::vector<std::unique_ptr<ceres::LossFunction>> losses;
@@ -78,7 +80,9 @@ Fitter::Fitter(const Target& target, Sequence* sequence, const FitterOptions& op
     : target_(target), sequence_(sequence), options_(options) {
   const std::string problem = options.Check();
   if (!problem.empty()) throw std::invalid_argument("fitter options: " + problem);
-  program_ = std::make_unique<Program>(sequence, options.fit_gates);
+  free_gates_ = options.fit_gates;
+  program_ = std::make_unique<Program>(sequence, free_gates_);
+  trust_region_radius_ = options.initial_trust_region_radius;
 }
 
 Fitter::~Fitter() = default;
@@ -124,7 +128,7 @@ void Fitter::BuildCorrespondences(uint64_t seed, Correspondences* out) {
 
 namespace {
 
-void BuildObjective(const Program& program, const Sequence& sequence, const FitterOptions& options, double unit_scale,
+void BuildObjective(const Program& program, const FitterOptions& options, double unit_scale,
                     const std::vector<SurfaceCorrespondence>& forward, double forward_weight,
                     const std::vector<SurfaceCorrespondence>& backward, double backward_weight,
                     const double* sparsity_weight, Objective* objective) {
@@ -136,24 +140,30 @@ void BuildObjective(const Program& program, const Sequence& sequence, const Fitt
     const ceres::LossFunction* loss = objective->losses.back().get();
     for (const SurfaceCorrespondence& c : list) {
       objective->terms.push_back(
-          {std::make_unique<CorrespondenceCost>(&program, c, options.metric, weight), loss, all_blocks});
+          {std::make_unique<CorrespondenceCost>(&program, c, options.metric, weight), loss, all_blocks, {}});
     }
   };
   add_terms(forward, forward_weight);
   add_terms(backward, backward_weight);
   for (const ProgramBlock& block : program.blocks()) {
     if (block.is_gate) {
-      objective->terms.push_back({std::make_unique<GateSparsityCost>(sparsity_weight), nullptr, {block.data}});
+      objective->terms.push_back({std::make_unique<GateSparsityCost>(sparsity_weight), nullptr, {block.data}, {}});
     }
   }
   for (const ParameterRangeRule& rule : options.domain_rules) {
     for (const ProgramBlock& block : program.blocks()) {
       if (!block.is_gate && block.op == rule.op && rule.param >= 0 && rule.param < block.size) {
-        objective->terms.push_back({std::make_unique<ParameterRangeCost>(rule, block.size), nullptr, {block.data}});
+        objective->terms.push_back({std::make_unique<ParameterRangeCost>(rule, block.size), nullptr, {block.data}, {}});
       }
     }
   }
-  (void)sequence;
+  for (Objective::Term& term : objective->terms) {
+    for (double* data : term.blocks) {
+      for (const ProgramBlock& block : program.blocks()) {
+        if (block.data == data) term.columns.push_back(block.column);
+      }
+    }
+  }
 }
 
 // Sum over terms of rho(|r|^2) at the program's current evaluation; with `gradient` (one entry
@@ -187,10 +197,7 @@ double EvaluateObjective(const Program& program, const Objective& objective, std
     if (!gradient) continue;
     // d rho / d params = 2 rho'(s) J^T r; map each block to its Program columns.
     for (size_t b = 0; b < sizes.size(); ++b) {
-      int column = -1;
-      for (const ProgramBlock& block : program.blocks()) {
-        if (block.data == term.blocks[b]) column = block.column;
-      }
+      const int column = term.columns[b];
       for (int j = 0; j < sizes[b]; ++j) {
         double g = 0;
         for (int i = 0; i < m; ++i) g += jacobian_pointers[b][i * sizes[b] + j] * (*residuals)[i];
@@ -207,7 +214,7 @@ double Fitter::CurrentLoss() {
   Correspondences correspondences;
   BuildCorrespondences(options_.seed, &correspondences);
   Objective objective;
-  BuildObjective(*program_, *sequence_, options_, target_.scale(), correspondences.output_to_target,
+  BuildObjective(*program_, options_, target_.scale(), correspondences.output_to_target,
                  correspondences.output_to_target_weight, correspondences.target_to_output,
                  correspondences.target_to_output_weight, &sparsity_weight_, &objective);
   program_->PrepareForEvaluation(false, true);
@@ -215,10 +222,54 @@ double Fitter::CurrentLoss() {
   return EvaluateObjective(*program_, objective, nullptr, &r, &j);
 }
 
+void Fitter::AddToProblem(const Objective& objective, ceres::Problem* problem) const {
+  for (const ProgramBlock& block : program_->blocks()) {
+    problem->AddParameterBlock(block.data, block.size);
+    if (static_cast<int>(block.constant.size()) == block.size || (block.is_gate ? hold_gates_ : hold_params_)) {
+      problem->SetParameterBlockConstant(block.data);
+    } else if (!block.constant.empty()) {
+      problem->SetManifold(block.data, new ceres::SubsetManifold(block.size, block.constant));
+    }
+    if (!block.is_gate) {
+      const std::vector<ParamSpec>& specs = sequence_->ops[block.op]->specs();
+      for (int i = 0; i < block.size; ++i) {
+        problem->SetParameterLowerBound(block.data, i, specs[i].lower);
+        problem->SetParameterUpperBound(block.data, i, specs[i].upper);
+      }
+    }
+  }
+  for (const Objective::Term& term : objective.terms) {
+    problem->AddResidualBlock(term.cost.get(), const_cast<ceres::LossFunction*>(term.loss), term.blocks);
+  }
+}
+
+void Fitter::EvaluateBothWays(double* own_loss, std::vector<double>* own_gradient, double* ceres_loss,
+                              std::vector<double>* ceres_gradient) {
+  Correspondences correspondences;
+  BuildCorrespondences(options_.seed, &correspondences);
+  Objective objective;
+  BuildObjective(*program_, options_, target_.scale(), correspondences.output_to_target,
+                 correspondences.output_to_target_weight, correspondences.target_to_output,
+                 correspondences.target_to_output_weight, &sparsity_weight_, &objective);
+  program_->PrepareForEvaluation(true, true);
+  std::vector<double> r, j;
+  *own_loss = EvaluateObjective(*program_, objective, own_gradient, &r, &j);
+  ceres::Problem::Options problem_options;
+  problem_options.evaluation_callback = program_.get();
+  problem_options.cost_function_ownership = ceres::DO_NOT_TAKE_OWNERSHIP;
+  problem_options.loss_function_ownership = ceres::DO_NOT_TAKE_OWNERSHIP;
+  ceres::Problem problem(problem_options);
+  AddToProblem(objective, &problem);
+  double cost = 0;
+  problem.Evaluate(ceres::Problem::EvaluateOptions(), &cost, nullptr, ceres_gradient, nullptr);
+  *ceres_loss = 2 * cost;
+  for (double& g : *ceres_gradient) g *= 2;
+}
+
 double Fitter::Solve(const Correspondences& correspondences, double sparsity_weight, FitSummary* summary) {
   sparsity_weight_ = sparsity_weight;
   Objective objective;
-  BuildObjective(*program_, *sequence_, options_, target_.scale(), correspondences.output_to_target,
+  BuildObjective(*program_, options_, target_.scale(), correspondences.output_to_target,
                  correspondences.output_to_target_weight, correspondences.target_to_output,
                  correspondences.target_to_output_weight, &sparsity_weight_, &objective);
   const std::vector<ProgramBlock>& blocks = program_->blocks();
@@ -229,24 +280,7 @@ double Fitter::Solve(const Correspondences& correspondences, double sparsity_wei
     problem_options.cost_function_ownership = ceres::DO_NOT_TAKE_OWNERSHIP;
     problem_options.loss_function_ownership = ceres::DO_NOT_TAKE_OWNERSHIP;
     ceres::Problem problem(problem_options);
-    for (const ProgramBlock& block : blocks) {
-      problem.AddParameterBlock(block.data, block.size);
-      if (static_cast<int>(block.constant.size()) == block.size || (block.is_gate ? hold_gates_ : hold_params_)) {
-        problem.SetParameterBlockConstant(block.data);
-      } else if (!block.constant.empty()) {
-        problem.SetManifold(block.data, new ceres::SubsetManifold(block.size, block.constant));
-      }
-      if (!block.is_gate) {
-        const std::vector<ParamSpec>& specs = sequence_->ops[block.op]->specs();
-        for (int i = 0; i < block.size; ++i) {
-          problem.SetParameterLowerBound(block.data, i, specs[i].lower);
-          problem.SetParameterUpperBound(block.data, i, specs[i].upper);
-        }
-      }
-    }
-    for (const Objective::Term& term : objective.terms) {
-      problem.AddResidualBlock(term.cost.get(), const_cast<ceres::LossFunction*>(term.loss), term.blocks);
-    }
+    AddToProblem(objective, &problem);
     ceres::Solver::Options solver_options;
     solver_options.minimizer_type = ceres::TRUST_REGION;
     solver_options.trust_region_strategy_type = ceres::LEVENBERG_MARQUARDT;
@@ -256,9 +290,17 @@ double Fitter::Solve(const Correspondences& correspondences, double sparsity_wei
     solver_options.logging_type = ceres::SILENT;
     solver_options.function_tolerance = 1e-8;
     solver_options.parameter_tolerance = 1e-10;
+    // The trust region carries over between correspondence updates: the first solve starts
+    // cautious (large early steps tend to jump between near-equivalent configurations, such as
+    // an inset's depth traded for an extrusion's height), later ones where the last ended.
+    solver_options.initial_trust_region_radius = trust_region_radius_;
     ceres::Solver::Summary solver_summary;
     ceres::Solve(solver_options, &problem, &solver_summary);
     summary->inner_iterations += static_cast<int>(solver_summary.iterations.size()) - 1;
+    if (!solver_summary.iterations.empty()) {
+      trust_region_radius_ = std::max(options_.initial_trust_region_radius,
+                                      std::min(1e16, solver_summary.iterations.back().trust_region_radius));
+    }
     program_->PrepareForEvaluation(false, true);  // leave the cache at the solution
     return 2 * solver_summary.final_cost;
   }
@@ -300,39 +342,55 @@ double Fitter::Solve(const Correspondences& correspondences, double sparsity_wei
   return EvaluateObjective(*program_, objective, nullptr, &r, &jac);
 }
 
-bool Fitter::ReproducesProgram() const {
+Fitter::Reproduction Fitter::CheckReproduction() const {
   try {
     Sequence copy = ParseSequence(SequenceToJson(*sequence_));
     for (size_t k = 0; k < copy.ops.size(); ++k) copy.gates[k] = program_->Gate(static_cast<int>(k));
     const std::vector<Mesh> steps = EvaluateSequence(&copy);
     const Mesh& result = steps.empty() ? copy.StartMesh() : steps.back();
-    if (result.faces != program_->faces() || result.vertices.size() != program_->positions().size()) return false;
-    const double tolerance = 1e-9 / target_.scale();
-    for (size_t v = 0; v < result.vertices.size(); ++v) {
-      if (!((result.vertices[v] - program_->positions()[v]).norm() <= tolerance)) return false;
+    if (result.faces != program_->faces() || result.vertices.size() != program_->positions().size()) {
+      return Reproduction::kDifferent;
     }
-    return true;
+    const double tolerance = 1e-7 / target_.scale();
+    for (size_t v = 0; v < result.vertices.size(); ++v) {
+      if (!((result.vertices[v] - program_->positions()[v]).norm() <= tolerance)) return Reproduction::kDifferent;
+    }
+    return Reproduction::kSame;
   } catch (const std::exception&) {
-    return false;
+    return Reproduction::kFails;
   }
+}
+
+bool Fitter::ResolveTopology() {
+  const Reproduction reproduction = CheckReproduction();
+  if (reproduction != Reproduction::kDifferent) return reproduction == Reproduction::kSame;
+  // The copy evaluated with these parameters and gates, so the sequence itself will too.
+  const std::vector<double> logits = program_->logits();
+  program_->StoreGates();
+  retired_jacobian_evaluations_ += program_->num_jacobian_evaluations();
+  program_ = std::make_unique<Program>(sequence_, free_gates_);
+  program_->set_logits(logits);  // exact gates (the constructor clamps them)
+  program_->PrepareForEvaluation(false, true);
+  return true;
 }
 
 double Fitter::RunStage(double sparsity_weight, FitSummary* summary) {
   sparsity_weight_ = sparsity_weight;
-  const std::vector<ProgramBlock>& blocks = program_->blocks();
+  // The program may be rebuilt (ResolveTopology) with the same block layout, so blocks are
+  // looked up afresh.
   auto snapshot = [&]() {
     std::vector<double> values;
-    for (const ProgramBlock& b : blocks) values.insert(values.end(), b.data, b.data + b.size);
+    for (const ProgramBlock& b : program_->blocks()) values.insert(values.end(), b.data, b.data + b.size);
     return values;
   };
   auto restore = [&](const std::vector<double>& values) {
     size_t k = 0;
-    for (const ProgramBlock& b : blocks) {
+    for (const ProgramBlock& b : program_->blocks()) {
       for (int i = 0; i < b.size; ++i) b.data[i] = values[k++];
     }
   };
   // Start inside the bounds (Ceres needs a feasible start).
-  for (const ProgramBlock& b : blocks) {
+  for (const ProgramBlock& b : program_->blocks()) {
     if (b.is_gate) continue;
     const std::vector<ParamSpec>& specs = sequence_->ops[b.op]->specs();
     for (int i = 0; i < b.size; ++i) b.data[i] = std::min(specs[i].upper, std::max(specs[i].lower, b.data[i]));
@@ -341,11 +399,15 @@ double Fitter::RunStage(double sparsity_weight, FitSummary* summary) {
   std::vector<double> best_values = snapshot(), best_reproducible_values;
   for (int update = 0; update < options_.max_outer_iterations; ++update) {
     const double started = Now();
+    // Discrete choices that depend on the parameters (a Boolean's intersection, the elements a
+    // target selects) are re-resolved at each update; where the sequence no longer evaluates,
+    // the last topology is kept and the point cannot be the result.
+    const bool reproducible = ResolveTopology();
     Correspondences correspondences;
     // The same seed every update: samples move smoothly with the shape, so losses compare.
     BuildCorrespondences(options_.seed, &correspondences);
     Objective objective;
-    BuildObjective(*program_, *sequence_, options_, target_.scale(), correspondences.output_to_target,
+    BuildObjective(*program_, options_, target_.scale(), correspondences.output_to_target,
                    correspondences.output_to_target_weight, correspondences.target_to_output,
                    correspondences.target_to_output_weight, &sparsity_weight_, &objective);
     program_->PrepareForEvaluation(false, true);
@@ -359,7 +421,7 @@ double Fitter::RunStage(double sparsity_weight, FitSummary* summary) {
       // The result must be a sequence that, as written, rebuilds the fitted mesh (its
       // geometric targets resolve to the same elements); the path there may pass through
       // parameters where they do not (e.g. from a start where they do not).
-      if (fresh < best_reproducible && ReproducesProgram()) {
+      if (fresh < best_reproducible && reproducible) {
         best_reproducible = fresh;
         best_reproducible_values = best_values;
       }
@@ -386,6 +448,7 @@ double Fitter::RunStage(double sparsity_weight, FitSummary* summary) {
     best_values = best_reproducible_values;
   }
   restore(best_values);
+  ResolveTopology();
   program_->PrepareForEvaluation(false, true);
   return best;
 }
@@ -424,9 +487,11 @@ void Fitter::Finalise(FitSummary* summary) {
     // A later op's target depends on a pruned one: keep them all (folded, near identity).
     next = ParseSequence(folded);
   }
+  retired_jacobian_evaluations_ += program_->num_jacobian_evaluations();
   program_.reset();
   *sequence_ = std::move(next);
-  program_ = std::make_unique<Program>(sequence_, /*free_gates=*/false);
+  free_gates_ = false;
+  program_ = std::make_unique<Program>(sequence_, free_gates_);
   if (options_.progress) {
     *options_.progress << "fit: finalised gates (" << summary->pruned_ops.size() << " ops pruned); polishing\n";
   }
@@ -436,9 +501,8 @@ void Fitter::Finalise(FitSummary* summary) {
 FitSummary Fitter::Fit() {
   FitSummary summary;
   start_time_ = Now();
-  const int jacobians_before = program_->num_jacobian_evaluations();
+  retired_jacobian_evaluations_ = -program_->num_jacobian_evaluations();  // count from here
   summary.initial_loss = CurrentLoss();
-  int jacobians = 0;
   if (options_.fit_gates) {
     // Stage 1: parameters with the gates held; stage 2: gates under the sparsity weight with
     // the parameters held (a gate and its op's parameters trade off exactly, so fitting both
@@ -449,18 +513,15 @@ FitSummary Fitter::Fit() {
     hold_params_ = true;
     RunStage(options_.gate_sparsity_weight, &summary);
     hold_params_ = false;
-    jacobians += program_->num_jacobian_evaluations() - jacobians_before;
     Finalise(&summary);
-    jacobians += program_->num_jacobian_evaluations();
   } else {
     RunStage(0.0, &summary);
     program_->StoreGates();
-    jacobians += program_->num_jacobian_evaluations() - jacobians_before;
   }
   sparsity_weight_ = 0;
   summary.final_loss = CurrentLoss();
   summary.history.push_back({Now() - start_time_, summary.inner_iterations, summary.final_loss});
-  summary.jacobian_evaluations = jacobians;
+  summary.jacobian_evaluations = retired_jacobian_evaluations_ + program_->num_jacobian_evaluations();
   summary.seconds = Now() - start_time_;
   return summary;
 }

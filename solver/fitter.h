@@ -1,16 +1,21 @@
 // Fits every continuous parameter (and optionally the gates) of a sequence skeleton to a
 // target: Chamfer residuals with correspondences fixed inside each solve (Levenberg-Marquardt,
 // or Adam over exactly the same objective and gradients), re-estimated in an outer ICP loop
-// until the loss stops improving.
+// until the loss stops improving. The loss: sum over residuals of rho(r^2), which without a
+// robust loss is the mean squared distance (target's unit box) of each direction, weighted and
+// summed, plus the gate and domain-rule penalties.
 //
 // With fit_gates the fit runs in stages: (1) the parameters with the gates held, (2) the gates
-// under the gate sparsity weight with the parameters held, (3) finalisation: ops whose gate fell below prune_gate are
-// removed, the other free gates are folded into their op's parameters (p <- identity +
-// g (p - identity), which is each op's gate blend) and set to 1, and a last solve polishes
-// the parameters with gates fixed, so the result is exportable to Blender.
+// under the gate sparsity weight with the parameters held, (3) finalisation: ops whose gate
+// fell below prune_gate are removed, the other free gates are folded into their op's
+// parameters (p <- identity + g (p - identity), which is each op's gate blend) and set to 1,
+// and a last solve polishes the parameters with gates fixed, so the result is exportable to
+// Blender.
 //
-// The result is the best parameter set at which the sequence, as written, rebuilds the fitted
-// mesh (geometric targets such as face boxes resolve to the same elements), when there is one.
+// Discrete choices are made by the topology passes at the start parameters and re-made at each
+// correspondence update when the parameters have moved them (a Boolean's intersection, the
+// elements a geometric target selects); the result is the best parameter set at which the
+// written sequence evaluates, when there is one.
 //
 // Deterministic for a given seed (single-threaded residual evaluation by default).
 #pragma once
@@ -20,6 +25,8 @@
 #include <memory>
 #include <string>
 #include <vector>
+
+#include <ceres/problem.h>
 
 #include "residuals/correspondence_cost.h"
 #include "solver/program.h"
@@ -40,10 +47,11 @@ struct FitterOptions {
   RobustLoss loss = RobustLoss::kNone;
   double loss_scale = 0.02;  // robust loss scale, unit-box units
   bool fit_gates = false;
-  double gate_sparsity_weight = 1e-4;  // stage 2 weight of sum(g^2) / 2 (data loss: unit box)
+  double gate_sparsity_weight = 1e-4;  // stage 2: adds weight * g^2 per free gate to the loss
   double prune_gate = 0.5;
   int max_outer_iterations = 40;    // correspondence updates per stage (stops earlier on stagnation)
   int max_inner_iterations = 5;     // LM iterations per solve (short: correspondences go stale)
+  double initial_trust_region_radius = 1e-2;  // LM's first; later solves continue from the last
   int adam_iterations = 150;        // Adam steps per solve
   double adam_learning_rate = 0.01;
   double min_relative_improvement = 1e-3;  // outer loop stops below this
@@ -74,6 +82,8 @@ struct FitSummary {
   std::vector<Point> history;
 };
 
+struct Objective;  // residual blocks at fixed correspondences (fitter.cc)
+
 class Fitter {
  public:
   // Prepares the sequence's topology at its current parameters (discrete choices fixed).
@@ -92,22 +102,37 @@ class Fitter {
   // Data loss at the current parameters with fresh correspondences.
   double CurrentLoss();
 
+  // Checks that both optimizers see one objective: at the current parameters and fresh
+  // correspondences, the loss and gradient (per Program column) as Adam evaluates them, and
+  // as Ceres does (Problem::Evaluate over the same residual blocks; 2 x its cost and gradient,
+  // one entry per parameter of the blocks it varies).
+  void EvaluateBothWays(double* own_loss, std::vector<double>* own_gradient, double* ceres_loss,
+                        std::vector<double>* ceres_gradient);
+
  private:
   struct Correspondences;
+  void AddToProblem(const Objective& objective, ceres::Problem* problem) const;
   void BuildCorrespondences(uint64_t seed, Correspondences* out);
   double RunStage(double sparsity_weight, FitSummary* summary);
   double Solve(const Correspondences& correspondences, double sparsity_weight, FitSummary* summary);
   void Finalise(FitSummary* summary);
-  // Whether the sequence as it would be written (re-parsed, targets re-resolved) rebuilds the
-  // program's current output.
-  bool ReproducesProgram() const;
+  // Whether the sequence as it would be written (re-parsed, topology passes re-run) rebuilds
+  // the program's current output, gives another topology or output, or fails to evaluate.
+  enum class Reproduction { kSame, kDifferent, kFails };
+  Reproduction CheckReproduction() const;
+  // Rebuilds the program when the topology passes now resolve differently. Returns whether the
+  // program then matches the sequence (false: the sequence does not evaluate here).
+  bool ResolveTopology();
 
   const Target& target_;
   Sequence* sequence_;
   FitterOptions options_;
   std::unique_ptr<Program> program_;
   double sparsity_weight_ = 0;
-  bool hold_params_ = false, hold_gates_ = false;  // blocks held constant in the current stage
+  double trust_region_radius_ = 0;
+  bool hold_params_ = false, hold_gates_ = false;
+  bool free_gates_ = false;
+  int retired_jacobian_evaluations_ = 0;  // by programs replaced during the fit  // blocks held constant in the current stage
   uint64_t update_count_ = 0;
   double start_time_ = 0;
 };

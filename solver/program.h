@@ -46,10 +46,11 @@ class Program : public ceres::EvaluationCallback {
   // The gate of op `op` (sigmoid of its logit when free).
   double Gate(int op) const;
   bool GateIsFree(int op) const { return gate_block_[op] >= 0; }
-  // Fixes the gate of `op` at `gate` (its logit block, if any, is left to the caller to hold).
-  void SetGate(int op, double gate);
   // Writes the current gates into the sequence.
   void StoreGates() const;
+  // Gate logits, one per op (meaningful for free gates).
+  const std::vector<double>& logits() const { return logits_; }
+  void set_logits(const std::vector<double>& logits) { logits_ = logits; values_ready_ = jacobian_ready_ = false; }
 
   // Evaluates at the current parameter values. Returns false when a position is not finite.
   bool EvaluateValues();

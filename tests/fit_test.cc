@@ -91,7 +91,7 @@ TEST(Fit, RecoversPerturbedParameters) {
   MetricsOptions metrics_options;
   metrics_options.num_samples = 5000;
   constexpr int kSeedsPerCase = 3;
-  int runs = 0;
+  int runs = 0, exact = 0;
   for (size_t c = 0; c < cases.size() * kSeedsPerCase; ++c) {
     const RecoveryCase& rc = cases[c / kSeedsPerCase];
     ++runs;
@@ -122,14 +122,18 @@ TEST(Fit, RecoversPerturbedParameters) {
     const double floor = SamplingNoiseFloor(target_mesh, metrics_options);
     const bool ok = metrics.chamfer.Sum() <= 2 * floor;
     passed += ok;
+    exact += metrics.chamfer.Sum() < 1e-4;
     std::printf("[recovery] %-14s seed %zu: %2d params, loss %.3e -> %.3e, Chamfer %.2e (floor %.2e) %s, %d updates, %d LM its, %.2f s\n",
                 rc.name.c_str(), c % kSeedsPerCase, perturbed, summary.initial_loss, summary.final_loss, metrics.chamfer.Sum(), floor,
                 ok ? "ok" : "MISSED", summary.outer_iterations, summary.inner_iterations, summary.seconds);
     EXPECT_GT(perturbed, 0) << rc.name;
     EXPECT_LT(summary.final_loss, summary.initial_loss) << rc.name;
   }
-  std::printf("[recovery] %d of %d within 2x the noise floor\n", passed, runs);
+  std::printf("[recovery] %d of %d within 2x the noise floor, %d exact (Chamfer < 1e-4)\n", passed, runs, exact);
   EXPECT_GE(passed, 0.9 * runs);
+  // The noise floor (~0.01-0.03 of the unit box) is a loose bar; the targets here are exactly
+  // reachable, so most runs must also recover the shape exactly.
+  EXPECT_GE(exact, 0.8 * runs);
 }
 
 }  // namespace
@@ -175,11 +179,14 @@ TEST(Fit, DecoyOpIsPruned) {
     std::printf("; pruned %zu op(s); final loss %.3e\n", summary.pruned_ops.size(), summary.final_loss);
     EXPECT_LT(summary.gates_before_finalisation[decoy.index], 0.5) << decoy.name;
     for (int k = 0; k < 4; ++k) {
-      if (k != decoy.index && k != 1) EXPECT_GT(summary.gates_before_finalisation[k], 0.5) << decoy.name << " op " << k;
+      if (k != decoy.index && k != 1) {  // op 1: LoopCut, no parameters, gate fixed
+        EXPECT_GT(summary.gates_before_finalisation[k], 0.5) << decoy.name << " op " << k;
+      }
     }
     EXPECT_EQ(summary.pruned_ops, std::vector<int>{decoy.index}) << decoy.name;
     ASSERT_EQ(sequence.ops.size(), 3u);
     for (double g : sequence.gates) EXPECT_EQ(g, 1.0);
+    EXPECT_NO_THROW(BlenderScript(sequence));  // exportable: every gate is 1
     const Mesh fitted = EvaluateSequence(&sequence).back();
     MetricsOptions metrics_options;
     metrics_options.num_samples = 5000;
@@ -277,6 +284,48 @@ TEST(Fit, DomainRuleBoundsAParameter) {
   EXPECT_NEAR(free_angle, 70.0, 1e-4);
   EXPECT_LT(ruled_angle, RadToDeg(0.5) + 3.0);
   EXPECT_GT(ruled_angle, 0.0);
+}
+
+}  // namespace
+}  // namespace opgraph
+
+namespace opgraph {
+namespace {
+
+// Adam and Ceres minimise one objective: the same loss and gradient at a point (free gates,
+// a robust loss and a domain rule included), and Adam also recovers a perturbed shape.
+TEST(Fit, AdamAndCeresSeeOneObjective) {
+  const Target target(TwistedBox(), {}, TargetOptions());
+  Sequence sequence = ParseSequence(Json::parse(kTwistedBox));
+  FitterOptions options = TestOptions();
+  options.fit_gates = true;
+  options.loss = RobustLoss::kHuber;
+  options.loss_scale = 0.01;
+  options.domain_rules.push_back({2, 0, -0.5, 0.5, 3.0});
+  Fitter fitter(target, &sequence, options);
+  PerturbParameters(fitter.program(), sequence, 8);
+  double own_loss, ceres_loss;
+  std::vector<double> own_gradient, ceres_gradient;
+  fitter.EvaluateBothWays(&own_loss, &own_gradient, &ceres_loss, &ceres_gradient);
+  EXPECT_GT(own_loss, 0);
+  EXPECT_NEAR(own_loss, ceres_loss, 1e-12 * own_loss);
+  // No held parameters here (no Subdivision), so Ceres' gradient has every Program column.
+  ASSERT_EQ(own_gradient.size(), ceres_gradient.size());
+  double largest = 0;
+  for (double g : own_gradient) largest = std::max(largest, std::abs(g));
+  EXPECT_GT(largest, 0);
+  for (size_t c = 0; c < own_gradient.size(); ++c) EXPECT_NEAR(own_gradient[c], ceres_gradient[c], 1e-10 * largest) << c;
+
+  FitterOptions adam = TestOptions();
+  adam.optimizer = Optimizer::kAdam;
+  FitSummary summary;
+  const Json fitted = FitTwistedBox(target, adam, &summary);
+  MetricsOptions metrics_options;
+  metrics_options.num_samples = 5000;
+  const double chamfer = ComputeShapeMetrics(Evaluate(fitted), TwistedBox(), metrics_options).chamfer.Sum();
+  std::printf("[adam] twisted box: loss %.3e -> %.3e, Chamfer %.2e, %d steps\n", summary.initial_loss,
+              summary.final_loss, chamfer, summary.inner_iterations);
+  EXPECT_LT(chamfer, 1e-3);
 }
 
 }  // namespace

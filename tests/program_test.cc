@@ -3,6 +3,9 @@
 // logits, held parameters).
 #include <gtest/gtest.h>
 
+#include <atomic>
+#include <cstdlib>
+#include <new>
 #include <random>
 
 #include "core/nearest.h"
@@ -146,6 +149,60 @@ TEST(Residuals, GateAndRangeCostsMatchCentralDifferences) {
     EXPECT_EQ(j[1], x < 0.5 ? -2.0 : (x > 2.0 ? 2.0 : 0.0));
     EXPECT_EQ(j[0], 0.0);
   }
+}
+
+}  // namespace
+}  // namespace opgraph
+
+// Counts heap allocations (operator new) so the hot loop can be checked allocation-free.
+namespace {
+std::atomic<long> g_allocations{0};
+}  // namespace
+
+void* operator new(std::size_t size) {
+  ++g_allocations;
+  if (void* p = std::malloc(size == 0 ? 1 : size)) return p;
+  throw std::bad_alloc();
+}
+void operator delete(void* p) noexcept { std::free(p); }
+void operator delete(void* p, std::size_t) noexcept { std::free(p); }
+
+namespace opgraph {
+namespace {
+
+// After the first evaluation has sized every buffer, evaluating the program (values and
+// Jacobian) and every residual block with its Jacobian allocates nothing.
+TEST(Program, HotLoopDoesNotAllocate) {
+  Sequence sequence = ParseSequence(Json::parse(kSequence));
+  Program program(&sequence, /*free_gates=*/true);
+  program.PrepareForEvaluation(true, true);
+  const std::vector<MeshTriangle> triangles = FanTriangulate(program.faces());
+  const SurfaceSamples samples = SampleSurface(program.positions(), triangles, 100, 3);
+  std::vector<std::unique_ptr<CorrespondenceCost>> costs;
+  for (size_t i = 0; i < samples.points.size(); ++i) {
+    SurfaceCorrespondence c;
+    for (int k = 0; k < 3; ++k) c.vertices[k] = triangles[samples.triangles[i]].v[k], c.weights[k] = samples.barycentrics[i][k];
+    c.target_point = samples.points[i];
+    c.target_normal = samples.normals[i];
+    costs.push_back(std::make_unique<CorrespondenceCost>(&program, c, ChamferMetric::kPointToPoint, 1.0));
+  }
+  const std::vector<double*> blocks = program.BlockPointers();
+  std::vector<std::vector<double>> storage;
+  std::vector<double*> jacobians;
+  for (int size : program.BlockSizes()) storage.emplace_back(3 * size);
+  for (auto& s : storage) jacobians.push_back(s.data());
+  double residuals[3];
+  const long before = g_allocations.load();
+  for (int round = 0; round < 3; ++round) {
+    blocks[0][0] += 0.01;
+    program.PrepareForEvaluation(true, true);
+    for (const auto& cost : costs) ASSERT_TRUE(cost->Evaluate(blocks.data(), residuals, jacobians.data()));
+  }
+  EXPECT_EQ(g_allocations.load() - before, 0);
+  // The counter does see allocations.
+  const long counted = g_allocations.load();
+  auto probe = std::make_unique<std::vector<double>>(10);
+  EXPECT_GT(g_allocations.load(), counted);
 }
 
 }  // namespace
