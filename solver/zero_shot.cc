@@ -134,11 +134,10 @@ class Controller {
       Sequence sequence = ParseSequence(layout.Document());
       const FitSummary summary = FitSequence(target_, &sequence, options);
       ++num_fits_;
-      const Json fitted = SequenceToJson(sequence);
+      trial.layout = layout.WithParameters(SequenceToJson(sequence));
       // The written sequence must replay: its selectors re-resolve at the fitted parameters.
-      Sequence replay = ParseSequence(fitted);
+      Sequence replay = ParseSequence(trial.layout.Document());
       EvaluateSequence(&replay);
-      trial.layout = layout.WithParameters(fitted);
       trial.loss = summary.final_loss;
       trial.ok = std::isfinite(trial.loss);
     } catch (const std::exception&) {
