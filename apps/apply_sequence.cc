@@ -2,13 +2,10 @@
 // Evaluates a design sequence and writes DIR/result.obj, DIR/steps/NN_<op>.obj and
 // DIR/rebuild_blender.py. Bad input: one line on stderr naming the problem, exit code 2, and
 // nothing written.
-#include <cstdio>
-#include <filesystem>
 #include <iostream>
 #include <string>
 
-#include "core/obj_io.h"
-#include "ops/sequence.h"
+#include "apps/sequence_outputs.h"
 
 namespace {
 
@@ -39,36 +36,22 @@ int main(int argc, char** argv) {
   }
 
   // Everything is computed before anything is written, so a bad sequence leaves no files.
-  std::vector<Mesh> steps;
-  std::string script;
-  Sequence sequence;
+  SequenceOutputs outputs;
   try {
-    sequence = LoadSequence(sequence_path);
-    steps = EvaluateSequence(&sequence);
-    script = BlenderScript(sequence);
+    Sequence sequence = LoadSequence(sequence_path);
+    outputs = RenderSequenceOutputs(&sequence);
   } catch (const std::exception& e) {
     std::cerr << "apply_sequence: " << e.what() << "\n";
     return 2;
   }
 
   try {
-    std::filesystem::create_directories(std::filesystem::path(out_dir) / "steps");
-    const Mesh result = steps.empty() ? sequence.StartMesh() : steps.back();
-    for (size_t i = 0; i < steps.size(); ++i) {
-      char name[64];
-      std::snprintf(name, sizeof(name), "%02zu_", i);
-      WriteObj(steps[i], out_dir + "/steps/" + name + sequence.ops[i]->Name() + ".obj",
-               "opgraph step " + std::to_string(i) + ": " + sequence.ops[i]->Name());
-    }
-    WriteObj(result, out_dir + "/result.obj", "opgraph apply_sequence result (Blender frame, +Z up)");
-    WriteFileAtomic(out_dir + "/rebuild_blender.py", script);
-    WriteFileAtomic(out_dir + "/sequence.json", SequenceToJson(sequence).dump(1) + "\n");
+    WriteSequenceOutputs(outputs, out_dir, /*write_steps=*/true, "opgraph apply_sequence result (Blender frame, +Z up)");
   } catch (const std::exception& e) {
     std::cerr << "apply_sequence: " << e.what() << "\n";
     return 1;
   }
-  std::cout << "apply_sequence: " << steps.size() << " operations -> " << out_dir << "/result.obj ("
-            << (steps.empty() ? 8 : steps.back().NumVertices()) << " vertices, "
-            << (steps.empty() ? 6 : steps.back().NumFaces()) << " faces)\n";
+  std::cout << "apply_sequence: " << outputs.steps.size() << " operations -> " << out_dir << "/result.obj ("
+            << outputs.result.NumVertices() << " vertices, " << outputs.result.NumFaces() << " faces)\n";
   return 0;
 }

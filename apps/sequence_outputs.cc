@@ -1,0 +1,37 @@
+#include "apps/sequence_outputs.h"
+
+#include <cstdio>
+#include <filesystem>
+
+#include "core/obj_io.h"
+
+namespace opgraph {
+
+SequenceOutputs RenderSequenceOutputs(Sequence* sequence) {
+  SequenceOutputs outputs;
+  outputs.steps = EvaluateSequence(sequence);
+  for (const auto& op : sequence->ops) outputs.step_names.push_back(op->Name());
+  outputs.result = outputs.steps.empty() ? sequence->StartMesh() : outputs.steps.back();
+  outputs.blender_script = BlenderScript(*sequence);
+  outputs.sequence_json = SequenceToJson(*sequence).dump(1) + "\n";
+  return outputs;
+}
+
+void WriteSequenceOutputs(const SequenceOutputs& outputs, const std::string& out_dir, bool write_steps,
+                          const std::string& result_comment) {
+  std::filesystem::create_directories(out_dir);
+  if (write_steps) {
+    std::filesystem::create_directories(std::filesystem::path(out_dir) / "steps");
+    for (size_t i = 0; i < outputs.steps.size(); ++i) {
+      char name[64];
+      std::snprintf(name, sizeof(name), "%02zu_", i);
+      WriteObj(outputs.steps[i], out_dir + "/steps/" + name + outputs.step_names[i] + ".obj",
+               "opgraph step " + std::to_string(i) + ": " + outputs.step_names[i]);
+    }
+  }
+  WriteObj(outputs.result, out_dir + "/result.obj", result_comment);
+  WriteFileAtomic(out_dir + "/rebuild_blender.py", outputs.blender_script);
+  WriteFileAtomic(out_dir + "/sequence.json", outputs.sequence_json);
+}
+
+}  // namespace opgraph

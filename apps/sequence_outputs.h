@@ -1,0 +1,28 @@
+// The files a sequence run produces (shared by apply_sequence and fit_sequence): everything is
+// computed first, so bad input leaves nothing written, then each file is written atomically.
+#pragma once
+
+#include <string>
+#include <vector>
+
+#include "ops/sequence.h"
+
+namespace opgraph {
+
+struct SequenceOutputs {
+  std::vector<Mesh> steps;             // the mesh after each op
+  std::vector<std::string> step_names; // op names
+  Mesh result;                         // the final mesh (the start cube for an empty sequence)
+  std::string blender_script;          // rebuild_blender.py
+  std::string sequence_json;           // sequence.json
+};
+
+// Evaluates `sequence` and renders its outputs. Throws SequenceError (nothing is written).
+SequenceOutputs RenderSequenceOutputs(Sequence* sequence);
+
+// Writes DIR/result.obj, DIR/rebuild_blender.py, DIR/sequence.json and, with `write_steps`,
+// DIR/steps/NN_<op>.obj, creating DIR. Throws std::exception on an I/O failure.
+void WriteSequenceOutputs(const SequenceOutputs& outputs, const std::string& out_dir, bool write_steps,
+                          const std::string& result_comment);
+
+}  // namespace opgraph

@@ -1,0 +1,191 @@
+// Ceres (Levenberg-Marquardt) vs Adam over the same objective and gradients, side by side:
+// per gt-dev model the engine reproduces, its ground-truth skeleton with every parameter
+// perturbed (as the recovery test), fitted to the Blender-built model.obj by both. Then the
+// Jacobian throughput for a ~2,000-vertex program with 10,000 samples.
+// Prints Markdown (docs/benchmarks.md holds a copy).
+//
+// usage: fit_benchmark [GT_DEV_DIR]   (default: ../shared/data/gt-dev beside the source tree)
+#include <chrono>
+#include <cstdio>
+#include <filesystem>
+#include <iostream>
+#include <limits>
+
+#include <ceres/crs_matrix.h>
+#include <ceres/manifold.h>
+#include <ceres/problem.h>
+
+#include "core/nearest.h"
+#include "residuals/correspondence_cost.h"
+#include "solver/fitter.h"
+#include "tests/gt_convert.h"
+#include "tests/perturb.h"
+
+namespace opgraph {
+namespace {
+
+namespace fs = std::filesystem;
+
+double Now() {
+  return std::chrono::duration<double>(std::chrono::steady_clock::now().time_since_epoch()).count();
+}
+
+struct Run {
+  FitSummary summary;
+  const char* name;
+};
+
+// First history point within 1 % of `best` (or below an absolute 1e-10: an RMS distance of
+// 1e-5 of the unit box, where relative comparisons stop meaning anything).
+const FitSummary::Point* Reached(const FitSummary& summary, double best) {
+  const double threshold = std::max(1.01 * best, 1e-10);
+  for (const FitSummary::Point& p : summary.history) {
+    if (p.loss <= threshold) return &p;
+  }
+  return nullptr;
+}
+
+void CompareOptimizers(const fs::path& root) {
+  std::printf("## Ceres (LM) vs Adam (lr 0.01), same objective\n\n");
+  std::printf("Start: the ground-truth skeleton, every parameter perturbed (+-30 %%, +-0.3 rad); target: gt-dev "
+              "`model.obj` (built by Blender). Loss: the objective with fresh correspondences (mean squared "
+              "point-to-plane distances, both directions, unit box). \"To 1 %%\": the first correspondence update "
+              "at which the loss is within 1 %% of the best either optimizer found (or below 1e-10).\n\n");
+  std::printf("| model | params | optimizer | to 1 %%: time (s) | to 1 %%: iterations | final loss | total time (s) | "
+              "iterations | Jacobian evaluations |\n");
+  std::printf("|---|---|---|---|---|---|---|---|---|\n");
+  std::vector<fs::path> models;
+  for (const auto& entry : fs::directory_iterator(root)) models.push_back(entry.path());
+  std::sort(models.begin(), models.end());
+  int index = 0;
+  for (const fs::path& model : models) {
+    std::string why_not;
+    const Json converted = ConvertGtSequence(model / "sequence.json", &why_not);
+    if (converted.is_null()) continue;
+    ++index;
+    TargetOptions target_options;
+    const std::unique_ptr<Target> target = LoadTarget((model / "model.obj").string(), target_options);
+    std::vector<Run> runs;
+    int num_params = 0;
+    for (Optimizer optimizer : {Optimizer::kCeres, Optimizer::kAdam}) {
+      Sequence sequence = ParseSequence(converted);
+      FitterOptions options;
+      options.optimizer = optimizer;
+      Fitter fitter(*target, &sequence, options);
+      num_params = PerturbParameters(fitter.program(), sequence, 1000 + index);
+      runs.push_back({fitter.Fit(), optimizer == Optimizer::kCeres ? "Ceres LM" : "Adam"});
+    }
+    double best = std::numeric_limits<double>::infinity();
+    for (const Run& run : runs) {
+      for (const FitSummary::Point& p : run.summary.history) best = std::min(best, p.loss);
+    }
+    for (const Run& run : runs) {
+      const FitSummary::Point* reached = Reached(run.summary, best);
+      char time[32] = "not reached", iterations[32] = "not reached";
+      if (reached) {
+        std::snprintf(time, sizeof(time), "%.3f", reached->seconds);
+        std::snprintf(iterations, sizeof(iterations), "%d", reached->iterations);
+      }
+      std::printf("| %s | %d | %s | %s | %s | %.3e | %.3f | %d | %d |\n", model.filename().c_str(), num_params, run.name,
+                  time, iterations, run.summary.final_loss, run.summary.seconds, run.summary.inner_iterations,
+                  run.summary.jacobian_evaluations);
+      std::fflush(stdout);
+    }
+  }
+}
+
+void JacobianThroughput() {
+  const char* document = R"({"operations": [
+    {"op": "GlobalAffineScale", "params": {"scale": [0.7, 0.9, 1.6]}},
+    {"op": "LoopCut", "params": {"axis": "Z", "cuts": 5, "near": [0.7, 0.9, 0]}},
+    {"op": "Extrude", "params": {"faces": {"normal": [0, 0, 1], "expect": 1}, "height": 0.5, "width": 0.6}},
+    {"op": "SimpleDeformTwist", "params": {"axis": "Z", "angle_deg": 50}},
+    {"op": "SimpleDeformBend", "params": {"axis": "X", "angle_deg": 30}},
+    {"op": "Subdivision", "params": {"levels": 3}}]})";
+  Sequence sequence = ParseSequence(Json::parse(document));
+  Program program(&sequence, /*free_gates=*/false);
+  program.EvaluateValues();
+  const int num_vertices = static_cast<int>(program.positions().size());
+  constexpr int kSamples = 10000;
+  const std::vector<MeshTriangle> triangles = FanTriangulate(program.faces());
+  const SurfaceSamples samples = SampleSurface(program.positions(), triangles, kSamples, 1);
+  std::vector<std::unique_ptr<CorrespondenceCost>> costs;
+  for (int i = 0; i < kSamples; ++i) {
+    SurfaceCorrespondence c;
+    for (int k = 0; k < 3; ++k) c.vertices[k] = triangles[samples.triangles[i]].v[k], c.weights[k] = samples.barycentrics[i][k];
+    c.target_point = samples.points[i] + samples.normals[i] * 0.01;
+    c.target_normal = samples.normals[i];
+    costs.push_back(std::make_unique<CorrespondenceCost>(&program, c, ChamferMetric::kPointToPlane, 0.01));
+  }
+  const std::vector<double*> blocks = program.BlockPointers();
+  std::vector<std::vector<double>> jacobian_storage;
+  std::vector<double*> jacobians;
+  for (int size : program.BlockSizes()) {
+    jacobian_storage.emplace_back(3 * size);
+    jacobians.push_back(jacobian_storage.back().data());
+  }
+  double residuals[3];
+
+  int program_runs = 0;
+  double start = Now();
+  while (Now() - start < 2.0) {
+    program.PrepareForEvaluation(true, true);
+    ++program_runs;
+  }
+  const double program_rate = program_runs / (Now() - start);
+
+  int full_runs = 0;
+  start = Now();
+  while (Now() - start < 2.0) {
+    program.PrepareForEvaluation(true, true);
+    for (const auto& cost : costs) cost->Evaluate(blocks.data(), residuals, jacobians.data());
+    ++full_runs;
+  }
+  const double full_rate = full_runs / (Now() - start);
+
+  // The same through Ceres (its evaluator and block-sparse Jacobian assembly), as in a solve.
+  ceres::Problem::Options problem_options;
+  problem_options.evaluation_callback = &program;
+  problem_options.cost_function_ownership = ceres::DO_NOT_TAKE_OWNERSHIP;
+  ceres::Problem problem(problem_options);
+  for (const auto& cost : costs) problem.AddResidualBlock(cost.get(), nullptr, blocks);
+  for (const ProgramBlock& block : program.blocks()) {
+    if (!block.constant.empty()) problem.SetManifold(block.data, new ceres::SubsetManifold(block.size, block.constant));
+  }
+  ceres::CRSMatrix jacobian;
+  std::vector<double> residual_values;
+  double cost_value = 0;
+  int ceres_runs = 0;
+  start = Now();
+  while (Now() - start < 2.0) {
+    problem.Evaluate(ceres::Problem::EvaluateOptions(), &cost_value, &residual_values, nullptr, &jacobian);
+    ++ceres_runs;
+  }
+  const double ceres_rate = ceres_runs / (Now() - start);
+
+  std::printf("\n## Jacobian throughput\n\n");
+  std::printf("Program: scale, loop cut, extrude, twist, bend, Subdivision level 3: %d vertices, %d fitted parameters "
+              "(%d forward-mode passes of 4 directions); %d point-to-plane samples. One thread.\n\n",
+              num_vertices, program.num_free_columns(), (program.num_free_columns() + 3) / 4, kSamples);
+  std::printf("| what | evaluations per second |\n|---|---|\n");
+  std::printf("| program values + Jacobian d(positions)/d(params) | %.1f |\n", program_rate);
+  std::printf("| the above + %d residual Jacobians (chain rule through barycentrics) | %.1f |\n", kSamples, full_rate);
+  std::printf("| the above through Ceres' Problem::Evaluate (its evaluator, plus conversion to a CRSMatrix) | %.1f |\n", ceres_rate);
+}
+
+}  // namespace
+}  // namespace opgraph
+
+int main(int argc, char** argv) {
+  const std::filesystem::path root =
+      argc > 1 ? std::filesystem::path(argv[1])
+               : std::filesystem::path(OPGRAPH_SOURCE_DIR) / ".." / "shared" / "data" / "gt-dev";
+  try {
+    opgraph::CompareOptimizers(root);
+    opgraph::JacobianThroughput();
+  } catch (const std::exception& e) {
+    std::cerr << "fit_benchmark: " << e.what() << "\n";
+    return 2;
+  }
+  return 0;
+}

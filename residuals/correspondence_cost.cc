@@ -1,0 +1,84 @@
+#include "residuals/correspondence_cost.h"
+
+#include <algorithm>
+#include <cmath>
+
+namespace opgraph {
+
+CorrespondenceCost::CorrespondenceCost(const Program* program, const SurfaceCorrespondence& correspondence,
+                                       ChamferMetric metric, double weight)
+    : program_(program), correspondence_(correspondence), metric_(metric), weight_(weight) {
+  set_num_residuals(metric == ChamferMetric::kPointToPoint ? 3 : 1);
+  *mutable_parameter_block_sizes() = program->BlockSizes();
+}
+
+bool CorrespondenceCost::Evaluate(double const* const*, double* residuals, double** jacobians) const {
+  if (!program_->valid()) return false;
+  const SurfaceCorrespondence& c = correspondence_;
+  const Positions<double>& positions = program_->positions();
+  Vec3d p = Vec3d::Zero();
+  for (int k = 0; k < 3; ++k) p += c.weights[k] * positions[c.vertices[k]];
+  const Vec3d difference = p - c.target_point;
+  const bool to_plane = metric_ == ChamferMetric::kPointToPlane;
+  if (to_plane) {
+    residuals[0] = weight_ * c.target_normal.dot(difference);
+  } else {
+    for (int d = 0; d < 3; ++d) residuals[d] = weight_ * difference[d];
+  }
+  if (jacobians == nullptr) return true;
+  const int num_columns = program_->num_columns();
+  const double* rows[3] = {program_->JacobianRows(c.vertices[0]), program_->JacobianRows(c.vertices[1]),
+                           program_->JacobianRows(c.vertices[2])};
+  const std::vector<ProgramBlock>& blocks = program_->blocks();
+  for (size_t b = 0; b < blocks.size(); ++b) {
+    if (jacobians[b] == nullptr) continue;
+    const int size = blocks[b].size, column = blocks[b].column;
+    for (int j = 0; j < size; ++j) {
+      double dp[3];
+      for (int d = 0; d < 3; ++d) {
+        const size_t offset = static_cast<size_t>(d) * num_columns + column + j;
+        dp[d] = c.weights[0] * rows[0][offset] + c.weights[1] * rows[1][offset] + c.weights[2] * rows[2][offset];
+      }
+      if (to_plane) {
+        jacobians[b][j] = weight_ * (c.target_normal[0] * dp[0] + c.target_normal[1] * dp[1] + c.target_normal[2] * dp[2]);
+      } else {
+        for (int d = 0; d < 3; ++d) jacobians[b][d * size + j] = weight_ * dp[d];
+      }
+    }
+  }
+  return true;
+}
+
+bool GateSparsityCost::Evaluate(double const* const* parameters, double* residuals, double** jacobians) const {
+  const double gate = 1.0 / (1.0 + std::exp(-parameters[0][0]));
+  const double root = std::sqrt(std::max(0.0, *weight_));
+  residuals[0] = root * gate;
+  if (jacobians && jacobians[0]) jacobians[0][0] = root * gate * (1 - gate);
+  return true;
+}
+
+ParameterRangeCost::ParameterRangeCost(const ParameterRangeRule& rule, int block_size)
+    : rule_(rule), block_size_(block_size) {
+  set_num_residuals(1);
+  mutable_parameter_block_sizes()->push_back(block_size);
+}
+
+bool ParameterRangeCost::Evaluate(double const* const* parameters, double* residuals, double** jacobians) const {
+  const double x = parameters[0][rule_.param];
+  const double root = std::sqrt(rule_.weight);
+  double slope = 0;
+  residuals[0] = 0;
+  if (x < rule_.lower) {
+    residuals[0] = root * (rule_.lower - x);
+    slope = -root;
+  } else if (x > rule_.upper) {
+    residuals[0] = root * (x - rule_.upper);
+    slope = root;
+  }
+  if (jacobians && jacobians[0]) {
+    for (int j = 0; j < block_size_; ++j) jacobians[0][j] = j == rule_.param ? slope : 0.0;
+  }
+  return true;
+}
+
+}  // namespace opgraph

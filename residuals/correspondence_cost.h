@@ -1,0 +1,73 @@
+// Chamfer residuals with correspondences fixed within a solve: a point on the output surface
+// (a triangle's 3 vertices and barycentric weights, so it moves with the program) against a
+// fixed target point. Output-to-target terms use an output sample and its nearest target
+// sample; target-to-output terms use a target sample and its closest output point.
+//   point-to-point: r = weight (p - q)            (3 residuals)
+//   point-to-plane: r = weight n . (p - q)        (1 residual; n the target's normal)
+// p and dp/dparams come from the Program's cache (chain rule through the barycentric weights);
+// the parameter blocks are all the Program's blocks, in its order.
+#pragma once
+
+#include <ceres/cost_function.h>
+#include <ceres/sized_cost_function.h>
+
+#include "solver/program.h"
+
+namespace opgraph {
+
+struct SurfaceCorrespondence {
+  int vertices[3];     // output vertices of the triangle holding p
+  double weights[3];   // barycentric weights of p
+  Vec3d target_point;  // q
+  Vec3d target_normal; // n (unit)
+};
+
+enum class ChamferMetric { kPointToPoint, kPointToPlane };
+
+class CorrespondenceCost : public ceres::CostFunction {
+ public:
+  // `weight` multiplies the residual (e.g. sqrt(term weight / #samples) x the unit-box scale).
+  CorrespondenceCost(const Program* program, const SurfaceCorrespondence& correspondence, ChamferMetric metric,
+                     double weight);
+  bool Evaluate(double const* const* parameters, double* residuals, double** jacobians) const override;
+
+ private:
+  const Program* program_;
+  SurfaceCorrespondence correspondence_;
+  ChamferMetric metric_;
+  double weight_;
+};
+
+// Gate sparsity: r = sqrt(*weight) sigmoid(w) on a gate logit w, so the cost is weight g^2 / 2.
+// `weight` is read at every evaluation (the fitter stages it).
+class GateSparsityCost : public ceres::SizedCostFunction<1, 1> {
+ public:
+  explicit GateSparsityCost(const double* weight) : weight_(weight) {}
+  bool Evaluate(double const* const* parameters, double* residuals, double** jacobians) const override;
+
+ private:
+  const double* weight_;
+};
+
+// Domain-rule hook: a soft range on one parameter of one op (a rule such as "an extrusion's
+// width stays above 0.05"): r = sqrt(weight) (max(0, lower - x) + max(0, x - upper)) on the
+// op's parameter block.
+struct ParameterRangeRule {
+  int op;
+  int param;
+  double lower;
+  double upper;
+  double weight;
+};
+
+class ParameterRangeCost : public ceres::CostFunction {
+ public:
+  ParameterRangeCost(const ParameterRangeRule& rule, int block_size);
+  bool Evaluate(double const* const* parameters, double* residuals, double** jacobians) const override;
+
+ private:
+  ParameterRangeRule rule_;
+  int block_size_;
+};
+
+}  // namespace opgraph

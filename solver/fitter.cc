@@ -1,0 +1,534 @@
+#include "solver/fitter.h"
+
+#include <ceres/loss_function.h>
+#include <ceres/manifold.h>
+#include <ceres/problem.h>
+#include <ceres/solver.h>
+
+#include <algorithm>
+#include <chrono>
+#include <cmath>
+#include <cstdio>
+#include <limits>
+#include <ostream>
+#include <stdexcept>
+
+#include "core/nearest.h"
+
+namespace opgraph {
+
+std::string FitterOptions::Check() const {
+  if (num_output_samples < 10 || num_output_samples > 10000000) return "num_output_samples must be in [10, 1e7]";
+  if (num_target_samples < 0 || num_target_samples > 10000000) return "num_target_samples must be in [0, 1e7]";
+  if (!(output_to_target_weight >= 0) || !(target_to_output_weight >= 0) ||
+      output_to_target_weight + target_to_output_weight <= 0) {
+    return "term weights must be >= 0 and not both 0";
+  }
+  if (!(loss_scale > 0)) return "loss_scale must be > 0";
+  if (!(gate_sparsity_weight >= 0)) return "gate_sparsity_weight must be >= 0";
+  if (!(prune_gate > 0 && prune_gate < 1)) return "prune_gate must be in (0, 1)";
+  if (max_outer_iterations < 1 || max_inner_iterations < 1 || adam_iterations < 1) return "iteration limits must be >= 1";
+  if (!(adam_learning_rate > 0)) return "adam_learning_rate must be > 0";
+  if (!(initial_trust_region_radius > 0)) return "initial_trust_region_radius must be > 0";
+  if (!(min_relative_improvement >= 0)) return "min_relative_improvement must be >= 0";
+  if (num_threads < 1) return "num_threads must be >= 1";
+  for (const ParameterRangeRule& rule : domain_rules) {
+    if (!(rule.weight >= 0) || !(rule.lower <= rule.upper)) return "domain rule: need weight >= 0 and lower <= upper";
+  }
+  return "";
+}
+
+namespace {
+
+double Now() {
+  return std::chrono::duration<double>(std::chrono::steady_clock::now().time_since_epoch()).count();
+}
+
+std::unique_ptr<ceres::LossFunction> MakeLoss(RobustLoss kind, double scale) {
+  switch (kind) {
+    case RobustLoss::kHuber:
+      return std::make_unique<ceres::HuberLoss>(scale);
+    case RobustLoss::kCauchy:
+      return std::make_unique<ceres::CauchyLoss>(scale);
+    case RobustLoss::kNone:
+      break;
+  }
+  return nullptr;
+}
+
+}  // namespace
+
+struct Fitter::Correspondences {
+  std::vector<SurfaceCorrespondence> output_to_target, target_to_output;
+  double output_to_target_weight = 0, target_to_output_weight = 0;  // residual multipliers
+};
+
+// The objective at fixed correspondences: residual blocks that both optimizers and the loss
+// reports evaluate identically (sum over blocks of rho(|r|^2); Ceres' cost is half of it).
+struct Objective {
+  struct Term {
+    std::unique_ptr<ceres::CostFunction> cost;
+    const ceres::LossFunction* loss;
+    std::vector<double*> blocks;
+    std::vector<int> columns;  // first Program Jacobian column of each block
+  };
+  std::vector<Term> terms;
+  std::vector<std::unique_ptr<ceres::LossFunction>> losses;
+};
+
+Fitter::Fitter(const Target& target, Sequence* sequence, const FitterOptions& options)
+    : target_(target), sequence_(sequence), options_(options) {
+  const std::string problem = options.Check();
+  if (!problem.empty()) throw std::invalid_argument("fitter options: " + problem);
+  free_gates_ = options.fit_gates;
+  program_ = std::make_unique<Program>(sequence, free_gates_);
+  trust_region_radius_ = options.initial_trust_region_radius;
+}
+
+Fitter::~Fitter() = default;
+
+void Fitter::BuildCorrespondences(uint64_t seed, Correspondences* out) {
+  program_->EvaluateValues();
+  const Positions<double>& positions = program_->positions();
+  const std::vector<MeshTriangle> triangles = FanTriangulate(program_->faces());
+  out->output_to_target.clear();
+  out->target_to_output.clear();
+  const double scale = target_.scale();
+  if (options_.output_to_target_weight > 0) {
+    const SurfaceSamples samples = SampleSurface(positions, triangles, options_.num_output_samples, seed);
+    for (size_t i = 0; i < samples.points.size(); ++i) {
+      SurfaceCorrespondence c;
+      const MeshTriangle& t = triangles[samples.triangles[i]];
+      for (int k = 0; k < 3; ++k) c.vertices[k] = t.v[k], c.weights[k] = samples.barycentrics[i][k];
+      const int nearest = target_.tree().Nearest(samples.points[i], nullptr);
+      c.target_point = target_.points()[nearest];
+      c.target_normal = target_.normals()[nearest];
+      out->output_to_target.push_back(c);
+    }
+    out->output_to_target_weight =
+        scale * std::sqrt(options_.output_to_target_weight / std::max<size_t>(1, out->output_to_target.size()));
+  }
+  const int num_target = std::min<int>(options_.num_target_samples, static_cast<int>(target_.points().size()));
+  if (options_.target_to_output_weight > 0 && num_target > 0) {
+    const TriangleTree tree(positions, triangles);
+    for (int i = 0; i < num_target; ++i) {
+      const ClosestPoint closest = tree.Closest(target_.points()[i]);
+      if (closest.triangle < 0) continue;
+      SurfaceCorrespondence c;
+      const MeshTriangle& t = triangles[closest.triangle];
+      for (int k = 0; k < 3; ++k) c.vertices[k] = t.v[k], c.weights[k] = closest.barycentric[k];
+      c.target_point = target_.points()[i];
+      c.target_normal = target_.normals()[i];
+      out->target_to_output.push_back(c);
+    }
+    out->target_to_output_weight =
+        scale * std::sqrt(options_.target_to_output_weight / std::max<size_t>(1, out->target_to_output.size()));
+  }
+}
+
+namespace {
+
+void BuildObjective(const Program& program, const FitterOptions& options, double unit_scale,
+                    const std::vector<SurfaceCorrespondence>& forward, double forward_weight,
+                    const std::vector<SurfaceCorrespondence>& backward, double backward_weight,
+                    const double* sparsity_weight, Objective* objective) {
+  const std::vector<double*> all_blocks = program.BlockPointers();
+  auto add_terms = [&](const std::vector<SurfaceCorrespondence>& list, double weight) {
+    // The robust loss acts on the residual weight * (p - q) = sqrt(w / N) * (distance in the
+    // unit box), so its scale (unit-box units) is multiplied by sqrt(w / N) = weight / unit_scale.
+    objective->losses.push_back(MakeLoss(options.loss, options.loss_scale * weight / unit_scale));
+    const ceres::LossFunction* loss = objective->losses.back().get();
+    for (const SurfaceCorrespondence& c : list) {
+      objective->terms.push_back(
+          {std::make_unique<CorrespondenceCost>(&program, c, options.metric, weight), loss, all_blocks, {}});
+    }
+  };
+  add_terms(forward, forward_weight);
+  add_terms(backward, backward_weight);
+  for (const ProgramBlock& block : program.blocks()) {
+    if (block.is_gate) {
+      objective->terms.push_back({std::make_unique<GateSparsityCost>(sparsity_weight), nullptr, {block.data}, {}});
+    }
+  }
+  for (const ParameterRangeRule& rule : options.domain_rules) {
+    for (const ProgramBlock& block : program.blocks()) {
+      if (!block.is_gate && block.op == rule.op && rule.param >= 0 && rule.param < block.size) {
+        objective->terms.push_back({std::make_unique<ParameterRangeCost>(rule, block.size), nullptr, {block.data}, {}});
+      }
+    }
+  }
+  for (Objective::Term& term : objective->terms) {
+    for (double* data : term.blocks) {
+      for (const ProgramBlock& block : program.blocks()) {
+        if (block.data == data) term.columns.push_back(block.column);
+      }
+    }
+  }
+}
+
+// Sum over terms of rho(|r|^2) at the program's current evaluation; with `gradient` (one entry
+// per Jacobian column of the program) also its gradient. Returns +inf when invalid.
+double EvaluateObjective(const Program& program, const Objective& objective, std::vector<double>* gradient,
+                         std::vector<double>* residuals, std::vector<double>* jacobian) {
+  if (!program.valid()) return std::numeric_limits<double>::infinity();
+  if (gradient) gradient->assign(program.num_columns(), 0.0);
+  double total = 0;
+  std::vector<double*> jacobian_pointers;
+  for (const Objective::Term& term : objective.terms) {
+    const ceres::CostFunction& cost = *term.cost;
+    const int m = cost.num_residuals();
+    residuals->resize(m);
+    const std::vector<int32_t>& sizes = cost.parameter_block_sizes();
+    int width = 0;
+    for (int s : sizes) width += s;
+    jacobian->resize(static_cast<size_t>(m) * width);
+    jacobian_pointers.resize(sizes.size());
+    for (size_t b = 0, offset = 0; b < sizes.size(); offset += static_cast<size_t>(m) * sizes[b], ++b) {
+      jacobian_pointers[b] = jacobian->data() + offset;
+    }
+    if (!cost.Evaluate(term.blocks.data(), residuals->data(), gradient ? jacobian_pointers.data() : nullptr)) {
+      return std::numeric_limits<double>::infinity();
+    }
+    double s = 0;
+    for (double r : *residuals) s += r * r;
+    double rho[3] = {s, 1.0, 0.0};
+    if (term.loss) term.loss->Evaluate(s, rho);
+    total += rho[0];
+    if (!gradient) continue;
+    // d rho / d params = 2 rho'(s) J^T r; map each block to its Program columns.
+    for (size_t b = 0; b < sizes.size(); ++b) {
+      const int column = term.columns[b];
+      for (int j = 0; j < sizes[b]; ++j) {
+        double g = 0;
+        for (int i = 0; i < m; ++i) g += jacobian_pointers[b][i * sizes[b] + j] * (*residuals)[i];
+        (*gradient)[column + j] += 2 * rho[1] * g;
+      }
+    }
+  }
+  return total;
+}
+
+}  // namespace
+
+double Fitter::CurrentLoss() {
+  Correspondences correspondences;
+  BuildCorrespondences(options_.seed, &correspondences);
+  Objective objective;
+  BuildObjective(*program_, options_, target_.scale(), correspondences.output_to_target,
+                 correspondences.output_to_target_weight, correspondences.target_to_output,
+                 correspondences.target_to_output_weight, &sparsity_weight_, &objective);
+  program_->PrepareForEvaluation(false, true);
+  std::vector<double> r, j;
+  return EvaluateObjective(*program_, objective, nullptr, &r, &j);
+}
+
+void Fitter::AddToProblem(const Objective& objective, ceres::Problem* problem) const {
+  for (const ProgramBlock& block : program_->blocks()) {
+    problem->AddParameterBlock(block.data, block.size);
+    if (static_cast<int>(block.constant.size()) == block.size || (block.is_gate ? hold_gates_ : hold_params_)) {
+      problem->SetParameterBlockConstant(block.data);
+    } else if (!block.constant.empty()) {
+      problem->SetManifold(block.data, new ceres::SubsetManifold(block.size, block.constant));
+    }
+    if (!block.is_gate) {
+      const std::vector<ParamSpec>& specs = sequence_->ops[block.op]->specs();
+      for (int i = 0; i < block.size; ++i) {
+        problem->SetParameterLowerBound(block.data, i, specs[i].lower);
+        problem->SetParameterUpperBound(block.data, i, specs[i].upper);
+      }
+    }
+  }
+  for (const Objective::Term& term : objective.terms) {
+    problem->AddResidualBlock(term.cost.get(), const_cast<ceres::LossFunction*>(term.loss), term.blocks);
+  }
+}
+
+void Fitter::EvaluateBothWays(double* own_loss, std::vector<double>* own_gradient, double* ceres_loss,
+                              std::vector<double>* ceres_gradient) {
+  Correspondences correspondences;
+  BuildCorrespondences(options_.seed, &correspondences);
+  Objective objective;
+  BuildObjective(*program_, options_, target_.scale(), correspondences.output_to_target,
+                 correspondences.output_to_target_weight, correspondences.target_to_output,
+                 correspondences.target_to_output_weight, &sparsity_weight_, &objective);
+  program_->PrepareForEvaluation(true, true);
+  std::vector<double> r, j;
+  *own_loss = EvaluateObjective(*program_, objective, own_gradient, &r, &j);
+  ceres::Problem::Options problem_options;
+  problem_options.evaluation_callback = program_.get();
+  problem_options.cost_function_ownership = ceres::DO_NOT_TAKE_OWNERSHIP;
+  problem_options.loss_function_ownership = ceres::DO_NOT_TAKE_OWNERSHIP;
+  ceres::Problem problem(problem_options);
+  AddToProblem(objective, &problem);
+  double cost = 0;
+  problem.Evaluate(ceres::Problem::EvaluateOptions(), &cost, nullptr, ceres_gradient, nullptr);
+  *ceres_loss = 2 * cost;
+  for (double& g : *ceres_gradient) g *= 2;
+}
+
+double Fitter::Solve(const Correspondences& correspondences, double sparsity_weight, FitSummary* summary) {
+  sparsity_weight_ = sparsity_weight;
+  Objective objective;
+  BuildObjective(*program_, options_, target_.scale(), correspondences.output_to_target,
+                 correspondences.output_to_target_weight, correspondences.target_to_output,
+                 correspondences.target_to_output_weight, &sparsity_weight_, &objective);
+  const std::vector<ProgramBlock>& blocks = program_->blocks();
+
+  if (options_.optimizer == Optimizer::kCeres) {
+    ceres::Problem::Options problem_options;
+    problem_options.evaluation_callback = program_.get();
+    problem_options.cost_function_ownership = ceres::DO_NOT_TAKE_OWNERSHIP;
+    problem_options.loss_function_ownership = ceres::DO_NOT_TAKE_OWNERSHIP;
+    ceres::Problem problem(problem_options);
+    AddToProblem(objective, &problem);
+    ceres::Solver::Options solver_options;
+    solver_options.minimizer_type = ceres::TRUST_REGION;
+    solver_options.trust_region_strategy_type = ceres::LEVENBERG_MARQUARDT;
+    solver_options.linear_solver_type = ceres::DENSE_QR;
+    solver_options.max_num_iterations = options_.max_inner_iterations;
+    solver_options.num_threads = options_.num_threads;
+    solver_options.logging_type = ceres::SILENT;
+    solver_options.function_tolerance = 1e-8;
+    solver_options.parameter_tolerance = 1e-10;
+    // The trust region carries over between correspondence updates: the first solve starts
+    // cautious (large early steps tend to jump between near-equivalent configurations, such as
+    // an inset's depth traded for an extrusion's height), later ones where the last ended.
+    solver_options.initial_trust_region_radius = trust_region_radius_;
+    ceres::Solver::Summary solver_summary;
+    ceres::Solve(solver_options, &problem, &solver_summary);
+    summary->inner_iterations += static_cast<int>(solver_summary.iterations.size()) - 1;
+    if (!solver_summary.iterations.empty()) {
+      trust_region_radius_ = std::max(options_.initial_trust_region_radius,
+                                      std::min(1e16, solver_summary.iterations.back().trust_region_radius));
+    }
+    program_->PrepareForEvaluation(false, true);  // leave the cache at the solution
+    return 2 * solver_summary.final_cost;
+  }
+
+  // Adam over the same objective: gradient from the same residual blocks and Jacobians.
+  const int n = program_->num_columns();
+  std::vector<double> m(n, 0.0), v(n, 0.0), gradient, r, jac;
+  std::vector<bool> free(n, false);
+  std::vector<double*> address(n);
+  std::vector<double> lower(n, -std::numeric_limits<double>::infinity()), upper(n, std::numeric_limits<double>::infinity());
+  for (const ProgramBlock& block : blocks) {
+    for (int i = 0; i < block.size; ++i) {
+      free[block.column + i] = std::count(block.constant.begin(), block.constant.end(), i) == 0 &&
+                               !(block.is_gate ? hold_gates_ : hold_params_);
+      address[block.column + i] = block.data + i;
+      if (!block.is_gate) {
+        lower[block.column + i] = sequence_->ops[block.op]->specs()[i].lower;
+        upper[block.column + i] = sequence_->ops[block.op]->specs()[i].upper;
+      }
+    }
+  }
+  constexpr double kBeta1 = 0.9, kBeta2 = 0.999, kEpsilon = 1e-8;
+  double loss = 0;
+  for (int step = 1; step <= options_.adam_iterations; ++step) {
+    program_->PrepareForEvaluation(true, true);
+    loss = EvaluateObjective(*program_, objective, &gradient, &r, &jac);
+    if (!std::isfinite(loss)) break;
+    for (int c = 0; c < n; ++c) {
+      if (!free[c]) continue;
+      m[c] = kBeta1 * m[c] + (1 - kBeta1) * gradient[c];
+      v[c] = kBeta2 * v[c] + (1 - kBeta2) * gradient[c] * gradient[c];
+      const double m_hat = m[c] / (1 - std::pow(kBeta1, step)), v_hat = v[c] / (1 - std::pow(kBeta2, step));
+      double& x = *address[c];
+      x = std::min(upper[c], std::max(lower[c], x - options_.adam_learning_rate * m_hat / (std::sqrt(v_hat) + kEpsilon)));
+    }
+    ++summary->inner_iterations;
+  }
+  program_->PrepareForEvaluation(false, true);
+  return EvaluateObjective(*program_, objective, nullptr, &r, &jac);
+}
+
+Fitter::Reproduction Fitter::CheckReproduction() const {
+  try {
+    Sequence copy = ParseSequence(SequenceToJson(*sequence_));
+    for (size_t k = 0; k < copy.ops.size(); ++k) copy.gates[k] = program_->Gate(static_cast<int>(k));
+    const std::vector<Mesh> steps = EvaluateSequence(&copy);
+    const Mesh& result = steps.empty() ? copy.StartMesh() : steps.back();
+    if (result.faces != program_->faces() || result.vertices.size() != program_->positions().size()) {
+      return Reproduction::kDifferent;
+    }
+    const double tolerance = 1e-7 / target_.scale();
+    for (size_t v = 0; v < result.vertices.size(); ++v) {
+      if (!((result.vertices[v] - program_->positions()[v]).norm() <= tolerance)) return Reproduction::kDifferent;
+    }
+    return Reproduction::kSame;
+  } catch (const std::exception&) {
+    return Reproduction::kFails;
+  }
+}
+
+bool Fitter::ResolveTopology() {
+  const Reproduction reproduction = CheckReproduction();
+  if (reproduction != Reproduction::kDifferent) return reproduction == Reproduction::kSame;
+  // The copy evaluated with these parameters and gates, so the sequence itself will too.
+  const std::vector<double> logits = program_->logits();
+  program_->StoreGates();
+  retired_jacobian_evaluations_ += program_->num_jacobian_evaluations();
+  program_ = std::make_unique<Program>(sequence_, free_gates_);
+  program_->set_logits(logits);  // exact gates (the constructor clamps them)
+  program_->PrepareForEvaluation(false, true);
+  return true;
+}
+
+double Fitter::RunStage(double sparsity_weight, FitSummary* summary) {
+  sparsity_weight_ = sparsity_weight;
+  // The program may be rebuilt (ResolveTopology) with the same block layout, so blocks are
+  // looked up afresh.
+  auto snapshot = [&]() {
+    std::vector<double> values;
+    for (const ProgramBlock& b : program_->blocks()) values.insert(values.end(), b.data, b.data + b.size);
+    return values;
+  };
+  auto restore = [&](const std::vector<double>& values) {
+    size_t k = 0;
+    for (const ProgramBlock& b : program_->blocks()) {
+      for (int i = 0; i < b.size; ++i) b.data[i] = values[k++];
+    }
+  };
+  // Start inside the bounds (Ceres needs a feasible start).
+  for (const ProgramBlock& b : program_->blocks()) {
+    if (b.is_gate) continue;
+    const std::vector<ParamSpec>& specs = sequence_->ops[b.op]->specs();
+    for (int i = 0; i < b.size; ++i) b.data[i] = std::min(specs[i].upper, std::max(specs[i].lower, b.data[i]));
+  }
+  double best = std::numeric_limits<double>::infinity(), best_reproducible = best;
+  std::vector<double> best_values = snapshot(), best_reproducible_values;
+  for (int update = 0; update < options_.max_outer_iterations; ++update) {
+    const double started = Now();
+    // Discrete choices that depend on the parameters (a Boolean's intersection, the elements a
+    // target selects) are re-resolved at each update; where the sequence no longer evaluates,
+    // the last topology is kept and the point cannot be the result.
+    const bool reproducible = ResolveTopology();
+    Correspondences correspondences;
+    // The same seed every update: samples move smoothly with the shape, so losses compare.
+    BuildCorrespondences(options_.seed, &correspondences);
+    Objective objective;
+    BuildObjective(*program_, options_, target_.scale(), correspondences.output_to_target,
+                   correspondences.output_to_target_weight, correspondences.target_to_output,
+                   correspondences.target_to_output_weight, &sparsity_weight_, &objective);
+    program_->PrepareForEvaluation(false, true);
+    std::vector<double> r, j;
+    const double fresh = EvaluateObjective(*program_, objective, nullptr, &r, &j);
+    summary->history.push_back({Now() - start_time_, summary->inner_iterations, fresh});
+    const bool improving = fresh < best * (1 - options_.min_relative_improvement);
+    if (fresh < best) {
+      best = fresh;
+      best_values = snapshot();
+      // The result must be a sequence that, as written, rebuilds the fitted mesh (its
+      // geometric targets resolve to the same elements); the path there may pass through
+      // parameters where they do not (e.g. from a start where they do not).
+      if (fresh < best_reproducible && reproducible) {
+        best_reproducible = fresh;
+        best_reproducible_values = best_values;
+      }
+    }
+    if (!improving) break;
+    const int iterations_before = summary->inner_iterations;
+    const double solved = Solve(correspondences, sparsity_weight, summary);
+    ++summary->outer_iterations;
+    if (options_.progress) {
+      char line[200];
+      std::snprintf(line, sizeof(line), "fit: update %d: loss %.4e -> %.4e (%d %s, %.2f s)%s\n", update, fresh, solved,
+                    summary->inner_iterations - iterations_before,
+                    options_.optimizer == Optimizer::kCeres ? "LM iterations" : "Adam steps", Now() - started,
+                    sparsity_weight > 0 ? " [gate sparsity]" : "");
+      *options_.progress << line << std::flush;
+    }
+  }
+  if (best_reproducible > best && !best_reproducible_values.empty()) {
+    if (options_.progress) {
+      *options_.progress << "fit: the best parameters (loss " << best << ") would change what the sequence's targets "
+                         << "select; keeping the best that do not (loss " << best_reproducible << ")\n";
+    }
+    best = best_reproducible;
+    best_values = best_reproducible_values;
+  }
+  restore(best_values);
+  ResolveTopology();
+  program_->PrepareForEvaluation(false, true);
+  return best;
+}
+
+void Fitter::Finalise(FitSummary* summary) {
+  program_->StoreGates();
+  summary->gates_before_finalisation = sequence_->gates;
+  std::vector<bool> prune(sequence_->ops.size(), false);
+  for (size_t k = 0; k < sequence_->ops.size(); ++k) {
+    Op& op = *sequence_->ops[k];
+    if (!program_->GateIsFree(static_cast<int>(k))) continue;
+    const double gate = sequence_->gates[k];
+    prune[k] = gate < options_.prune_gate;
+    // Fold the gate into the parameters: each op's gate blends p toward its identity value.
+    for (size_t i = 0; i < op.params().size(); ++i) {
+      const ParamSpec& spec = op.specs()[i];
+      double& p = op.mutable_params()[i];
+      p = std::min(spec.upper, std::max(spec.lower, spec.identity + gate * (p - spec.identity)));
+    }
+    sequence_->gates[k] = 1.0;
+  }
+  const Json folded = SequenceToJson(*sequence_);
+  Json pruned = folded;
+  pruned["operations"] = Json::array();
+  for (size_t k = 0; k < prune.size(); ++k) {
+    if (!prune[k]) pruned["operations"].push_back(folded["operations"][k]);
+  }
+  Sequence next;
+  try {
+    next = ParseSequence(pruned);
+    EvaluateSequence(&next);
+    for (size_t k = 0; k < prune.size(); ++k) {
+      if (prune[k]) summary->pruned_ops.push_back(static_cast<int>(k));
+    }
+  } catch (const SequenceError&) {
+    // A later op's target depends on a pruned one: keep them all (folded, near identity).
+    next = ParseSequence(folded);
+  }
+  retired_jacobian_evaluations_ += program_->num_jacobian_evaluations();
+  program_.reset();
+  *sequence_ = std::move(next);
+  free_gates_ = false;
+  program_ = std::make_unique<Program>(sequence_, free_gates_);
+  if (options_.progress) {
+    *options_.progress << "fit: finalised gates (" << summary->pruned_ops.size() << " ops pruned); polishing\n";
+  }
+  RunStage(0.0, summary);
+}
+
+FitSummary Fitter::Fit() {
+  FitSummary summary;
+  start_time_ = Now();
+  retired_jacobian_evaluations_ = -program_->num_jacobian_evaluations();  // count from here
+  summary.initial_loss = CurrentLoss();
+  if (options_.fit_gates) {
+    // Stage 1: parameters with the gates held; stage 2: gates under the sparsity weight with
+    // the parameters held (a gate and its op's parameters trade off exactly, so fitting both
+    // under the penalty would shrink every gate and inflate the parameters to compensate).
+    hold_gates_ = true;
+    RunStage(0.0, &summary);
+    hold_gates_ = false;
+    hold_params_ = true;
+    RunStage(options_.gate_sparsity_weight, &summary);
+    hold_params_ = false;
+    Finalise(&summary);
+  } else {
+    RunStage(0.0, &summary);
+    program_->StoreGates();
+  }
+  sparsity_weight_ = 0;
+  summary.final_loss = CurrentLoss();
+  summary.history.push_back({Now() - start_time_, summary.inner_iterations, summary.final_loss});
+  summary.jacobian_evaluations = retired_jacobian_evaluations_ + program_->num_jacobian_evaluations();
+  summary.seconds = Now() - start_time_;
+  return summary;
+}
+
+FitSummary FitSequence(const Target& target, Sequence* sequence, const FitterOptions& options) {
+  Fitter fitter(target, sequence, options);
+  return fitter.Fit();
+}
+
+}  // namespace opgraph

@@ -1,0 +1,143 @@
+// Fits every continuous parameter (and optionally the gates) of a sequence skeleton to a
+// target: Chamfer residuals with correspondences fixed inside each solve (Levenberg-Marquardt,
+// or Adam over exactly the same objective and gradients), re-estimated in an outer ICP loop
+// until the loss stops improving. The loss: sum over residuals of rho(r^2), which without a
+// robust loss is the mean squared distance (target's unit box) of each direction, weighted and
+// summed, plus the gate and domain-rule penalties.
+//
+// With fit_gates the fit runs in stages: (1) the parameters with the gates held, (2) the gates
+// under the gate sparsity weight with the parameters held, (3) finalisation: ops whose gate
+// fell below prune_gate are removed, the other free gates are folded into their op's
+// parameters (p <- identity + g (p - identity), which is each op's gate blend) and set to 1,
+// and a last solve polishes the parameters with gates fixed, so the result is exportable to
+// Blender.
+//
+// Discrete choices are made by the topology passes at the start parameters and re-made at each
+// correspondence update when the parameters have moved them (a Boolean's intersection, the
+// elements a geometric target selects); the result is the best parameter set at which the
+// written sequence evaluates, when there is one.
+//
+// Deterministic for a given seed (single-threaded residual evaluation by default).
+#pragma once
+
+#include <cstdint>
+#include <iosfwd>
+#include <memory>
+#include <string>
+#include <vector>
+
+#include <ceres/problem.h>
+
+#include "residuals/correspondence_cost.h"
+#include "solver/program.h"
+#include "solver/target.h"
+
+namespace opgraph {
+
+enum class RobustLoss { kNone, kHuber, kCauchy };
+enum class Optimizer { kCeres, kAdam };
+
+struct FitterOptions {
+  Optimizer optimizer = Optimizer::kCeres;
+  int num_output_samples = 3000;  // output-to-target samples per correspondence update
+  int num_target_samples = 3000;  // target-to-output samples (the first of the target's samples)
+  double output_to_target_weight = 1.0;
+  double target_to_output_weight = 1.0;
+  ChamferMetric metric = ChamferMetric::kPointToPlane;
+  RobustLoss loss = RobustLoss::kNone;
+  double loss_scale = 0.02;  // robust loss scale, unit-box units
+  bool fit_gates = false;
+  double gate_sparsity_weight = 1e-4;  // stage 2: adds weight * g^2 per free gate to the loss
+  double prune_gate = 0.5;
+  int max_outer_iterations = 40;    // correspondence updates per stage (stops earlier on stagnation)
+  int max_inner_iterations = 5;     // LM iterations per solve (short: correspondences go stale)
+  double initial_trust_region_radius = 1e-2;  // LM's first; later solves continue from the last
+  int adam_iterations = 150;        // Adam steps per solve
+  double adam_learning_rate = 0.01;
+  double min_relative_improvement = 1e-3;  // outer loop stops below this
+  int num_threads = 1;
+  uint64_t seed = 1;
+  std::vector<ParameterRangeRule> domain_rules;
+  std::ostream* progress = nullptr;  // one line per solve when set
+  // Empty when valid, else the problem.
+  std::string Check() const;
+};
+
+struct FitSummary {
+  double initial_loss = 0;  // data loss at the start (mean squared distances, unit box, summed)
+  double final_loss = 0;
+  int outer_iterations = 0;
+  int inner_iterations = 0;      // LM iterations or Adam steps
+  int jacobian_evaluations = 0;
+  double seconds = 0;
+  std::vector<double> gates_before_finalisation;  // per op of the input sequence
+  std::vector<int> pruned_ops;                    // indices in the input sequence
+  // The loss with fresh correspondences (a function of the parameters only, so comparable
+  // across optimizers) at each correspondence update and at the end.
+  struct Point {
+    double seconds;   // since Fit() started
+    int iterations;   // inner iterations so far
+    double loss;
+  };
+  std::vector<Point> history;
+};
+
+struct Objective;  // residual blocks at fixed correspondences (fitter.cc)
+
+class Fitter {
+ public:
+  // Prepares the sequence's topology at its current parameters (discrete choices fixed).
+  // Throws SequenceError like EvaluateSequence; std::invalid_argument on bad options.
+  Fitter(const Target& target, Sequence* sequence, const FitterOptions& options);
+  ~Fitter();
+
+  // The program being fitted (its blocks alias the sequence's op parameters, so a caller may
+  // set start values after construction without changing the discrete choices).
+  Program& program() { return *program_; }
+
+  // Fits in place. The sequence afterwards holds the fitted parameters and gates (pruned ops
+  // removed when fitting gates).
+  FitSummary Fit();
+
+  // Data loss at the current parameters with fresh correspondences.
+  double CurrentLoss();
+
+  // Checks that both optimizers see one objective: at the current parameters and fresh
+  // correspondences, the loss and gradient (per Program column) as Adam evaluates them, and
+  // as Ceres does (Problem::Evaluate over the same residual blocks; 2 x its cost and gradient,
+  // one entry per parameter of the blocks it varies).
+  void EvaluateBothWays(double* own_loss, std::vector<double>* own_gradient, double* ceres_loss,
+                        std::vector<double>* ceres_gradient);
+
+ private:
+  struct Correspondences;
+  void AddToProblem(const Objective& objective, ceres::Problem* problem) const;
+  void BuildCorrespondences(uint64_t seed, Correspondences* out);
+  double RunStage(double sparsity_weight, FitSummary* summary);
+  double Solve(const Correspondences& correspondences, double sparsity_weight, FitSummary* summary);
+  void Finalise(FitSummary* summary);
+  // Whether the sequence as it would be written (re-parsed, topology passes re-run) rebuilds
+  // the program's current output, gives another topology or output, or fails to evaluate.
+  enum class Reproduction { kSame, kDifferent, kFails };
+  Reproduction CheckReproduction() const;
+  // Rebuilds the program when the topology passes now resolve differently. Returns whether the
+  // program then matches the sequence (false: the sequence does not evaluate here).
+  bool ResolveTopology();
+
+  const Target& target_;
+  Sequence* sequence_;
+  FitterOptions options_;
+  std::unique_ptr<Program> program_;
+  double sparsity_weight_ = 0;
+  double trust_region_radius_ = 0;
+  bool hold_params_ = false, hold_gates_ = false;
+  bool free_gates_ = false;
+  int retired_jacobian_evaluations_ = 0;  // by programs replaced during the fit  // blocks held constant in the current stage
+  uint64_t update_count_ = 0;
+  double start_time_ = 0;
+};
+
+// Runs Fitter(target, sequence, options).Fit().
+FitSummary FitSequence(const Target& target, Sequence* sequence, const FitterOptions& options);
+
+}  // namespace opgraph

@@ -1,0 +1,150 @@
+#include "solver/program.h"
+
+#include <algorithm>
+#include <cmath>
+
+namespace opgraph {
+
+namespace {
+
+double Sigmoid(double w) { return 1.0 / (1.0 + std::exp(-w)); }
+double Logit(double g) { return std::log(g / (1.0 - g)); }
+
+// Whether sequence.json carries parameter `index` of `op` (changing it changes the JSON).
+bool IsWrittenToJson(Op* op, int index) {
+  double& value = op->mutable_params()[index];
+  const ParamSpec& spec = op->specs()[index];
+  const double saved = value;
+  const Json before = op->ParamsToJson();
+  double probe = saved + 0.125 * (std::abs(saved) + 1);
+  if (probe > spec.upper) probe = saved - 0.125 * (std::abs(saved) + 1);
+  probe = std::max(spec.lower, std::min(spec.upper, probe));
+  value = probe;
+  const Json after = op->ParamsToJson();
+  value = saved;
+  return probe != saved && before != after;
+}
+
+}  // namespace
+
+Program::Program(Sequence* sequence, bool free_gates) : sequence_(sequence), start_(sequence->StartMesh()) {
+  const std::vector<Mesh> meshes = EvaluateSequence(sequence);  // topology passes (discrete choices)
+  const int num_ops = static_cast<int>(sequence->ops.size());
+  steps_.push_back(start_.vertices);
+  for (const Mesh& m : meshes) steps_.push_back(m.vertices);
+  param_block_.assign(num_ops, -1);
+  gate_block_.assign(num_ops, -1);
+  logits_.assign(num_ops, 0.0);
+  jet_params_.resize(num_ops);
+  size_t max_vertices = start_.vertices.size();
+  for (int k = 0; k < num_ops; ++k) {
+    Op* op = sequence->ops[k].get();
+    max_vertices = std::max<size_t>(max_vertices, op->num_output_vertices());
+    jet_params_[k].resize(op->params().size());
+    std::vector<int> constant, fitted;
+    for (int i = 0; i < static_cast<int>(op->params().size()); ++i) {
+      (IsWrittenToJson(op, i) ? fitted : constant).push_back(i);
+    }
+    if (!fitted.empty()) {
+      param_block_[k] = static_cast<int>(blocks_.size());
+      blocks_.push_back({op->mutable_params().data(), static_cast<int>(op->params().size()), k, false, num_columns_, constant});
+      for (int i : fitted) free_columns_.push_back({k, i, num_columns_ + i});
+      num_columns_ += static_cast<int>(op->params().size());
+    }
+    if (free_gates && !fitted.empty()) {
+      logits_[k] = Logit(std::min(0.98, std::max(0.02, sequence->gates[k])));
+      gate_block_[k] = static_cast<int>(blocks_.size());
+      blocks_.push_back({&logits_[k], 1, k, true, num_columns_, {}});
+      free_columns_.push_back({k, -1, num_columns_});
+      num_columns_ += 1;
+    }
+  }
+  jet_in_.reserve(max_vertices);
+  jet_out_.reserve(max_vertices);
+  jacobian_.assign(3 * positions().size() * num_columns_, 0.0);
+}
+
+std::vector<double*> Program::BlockPointers() const {
+  std::vector<double*> pointers;
+  for (const ProgramBlock& b : blocks_) pointers.push_back(b.data);
+  return pointers;
+}
+
+std::vector<int> Program::BlockSizes() const {
+  std::vector<int> sizes;
+  for (const ProgramBlock& b : blocks_) sizes.push_back(b.size);
+  return sizes;
+}
+
+double Program::Gate(int op) const {
+  return gate_block_[op] >= 0 ? Sigmoid(logits_[op]) : sequence_->gates[op];
+}
+
+void Program::StoreGates() const {
+  for (size_t k = 0; k < sequence_->ops.size(); ++k) sequence_->gates[k] = Gate(static_cast<int>(k));
+}
+
+bool Program::EvaluateValues() {
+  ++num_value_evaluations_;
+  valid_ = true;
+  for (size_t k = 0; k < sequence_->ops.size(); ++k) {
+    const Op& op = *sequence_->ops[k];
+    const double gate = Gate(static_cast<int>(k));
+    op.Evaluate(op.params().data(), gate, steps_[k], &steps_[k + 1]);
+  }
+  for (const Vec3d& p : positions()) {
+    if (!p.allFinite()) {
+      valid_ = false;
+      break;
+    }
+  }
+  values_ready_ = true;
+  return valid_;
+}
+
+void Program::EvaluateJacobian() {
+  ++num_jacobian_evaluations_;
+  const int num_ops = static_cast<int>(sequence_->ops.size());
+  const int num_vertices = static_cast<int>(positions().size());
+  for (size_t chunk = 0; chunk < free_columns_.size(); chunk += kJetDim) {
+    const size_t chunk_end = std::min(free_columns_.size(), chunk + kJetDim);
+    const int first_op = free_columns_[chunk].op;
+    const Positions<double>& start = steps_[first_op];
+    jet_in_.resize(start.size());
+    for (size_t v = 0; v < start.size(); ++v) {
+      for (int d = 0; d < 3; ++d) jet_in_[v][d] = JetT(start[v][d]);
+    }
+    for (int k = first_op; k < num_ops; ++k) {
+      const Op& op = *sequence_->ops[k];
+      std::vector<JetT>& params = jet_params_[k];
+      for (size_t i = 0; i < params.size(); ++i) params[i] = JetT(op.params()[i]);
+      JetT gate(Gate(k));
+      for (size_t c = chunk; c < chunk_end; ++c) {
+        const FreeColumn& column = free_columns_[c];
+        if (column.op != k) continue;
+        if (column.param >= 0) {
+          params[column.param].v[c - chunk] = 1.0;
+        } else {
+          gate.v[c - chunk] = gate.a * (1.0 - gate.a);  // d sigmoid / d logit
+        }
+      }
+      op.Evaluate(params.data(), gate, jet_in_, &jet_out_);
+      jet_in_.swap(jet_out_);
+    }
+    for (int v = 0; v < num_vertices; ++v) {
+      for (int d = 0; d < 3; ++d) {
+        double* row = jacobian_.data() + (3 * static_cast<size_t>(v) + d) * num_columns_;
+        for (size_t c = chunk; c < chunk_end; ++c) row[free_columns_[c].column] = jet_in_[v][d].v[c - chunk];
+      }
+    }
+  }
+  jacobian_ready_ = true;
+}
+
+void Program::PrepareForEvaluation(bool evaluate_jacobians, bool new_evaluation_point) {
+  if (new_evaluation_point) values_ready_ = jacobian_ready_ = false;
+  if (!values_ready_) EvaluateValues();
+  if (evaluate_jacobians && !jacobian_ready_ && valid_) EvaluateJacobian();
+}
+
+}  // namespace opgraph

@@ -1,0 +1,98 @@
+// A sequence with its discrete choices fixed, as a differentiable function of its continuous
+// parameters: the output positions and their Jacobian, for Ceres.
+//
+// Parameter blocks: one per op with fitted parameters (the op's own params array, so Ceres
+// writes the op directly) and one per op with a free gate (a logit w, gate = sigmoid(w)).
+// A parameter is fitted when it is written to sequence.json (a parameter the JSON does not
+// carry, like Subdivision's level_blend, is a fixed internal relaxation and stays constant);
+// ops without fitted parameters keep their gate fixed (their gate has no meaning to fit).
+//
+// Ops evaluate with JetT = ceres::Jet<double, 4> only, so the Jacobian is built by forward mode
+// in chunks of 4 directions, each chunk starting at the first op it touches (the positions
+// before it are cached doubles). The program is evaluated once per Ceres evaluation point
+// (EvaluationCallback) and shared by every residual block through positions() / Jacobian rows.
+#pragma once
+
+#include <ceres/evaluation_callback.h>
+
+#include <vector>
+
+#include "ops/sequence.h"
+
+namespace opgraph {
+
+struct ProgramBlock {
+  double* data;
+  int size;
+  int op;          // index into the sequence's ops
+  bool is_gate;    // a gate logit (size 1) rather than the op's parameters
+  int column;      // first Jacobian column of the block
+  std::vector<int> constant;  // indices within the block held constant
+};
+
+class Program : public ceres::EvaluationCallback {
+ public:
+  // Runs every op's topology pass once at the sequence's current parameters. `free_gates`: the
+  // gates of ops with fitted parameters become parameters (started at min(max(g, 0.02), 0.98)
+  // so the sigmoid is not saturated). Throws SequenceError like EvaluateSequence.
+  Program(Sequence* sequence, bool free_gates);
+
+  const std::vector<ProgramBlock>& blocks() const { return blocks_; }
+  int num_columns() const { return num_columns_; }
+  int num_free_columns() const { return static_cast<int>(free_columns_.size()); }
+  std::vector<double*> BlockPointers() const;
+  std::vector<int> BlockSizes() const;
+
+  // The gate of op `op` (sigmoid of its logit when free).
+  double Gate(int op) const;
+  bool GateIsFree(int op) const { return gate_block_[op] >= 0; }
+  // Writes the current gates into the sequence.
+  void StoreGates() const;
+  // Gate logits, one per op (meaningful for free gates).
+  const std::vector<double>& logits() const { return logits_; }
+  void set_logits(const std::vector<double>& logits) { logits_ = logits; values_ready_ = jacobian_ready_ = false; }
+
+  // Evaluates at the current parameter values. Returns false when a position is not finite.
+  bool EvaluateValues();
+  // Needs EvaluateValues() at the same point first.
+  void EvaluateJacobian();
+  bool valid() const { return valid_; }
+
+  // Output topology and #V positions.
+  const std::vector<Polygon>& faces() const { return sequence_->ops.empty() ? start_.faces : sequence_->ops.back()->output_faces(); }
+  const Positions<double>& positions() const { return steps_.back(); }
+  Mesh OutputMesh() const { return {positions(), faces()}; }
+  // The 3 rows (x, y, z) of the #3V by num_columns() row-major Jacobian for `vertex`.
+  const double* JacobianRows(int vertex) const { return jacobian_.data() + 3 * static_cast<size_t>(vertex) * num_columns_; }
+
+  void PrepareForEvaluation(bool evaluate_jacobians, bool new_evaluation_point) override;
+
+  // Number of program evaluations (values, Jacobians) so far.
+  int num_value_evaluations() const { return num_value_evaluations_; }
+  int num_jacobian_evaluations() const { return num_jacobian_evaluations_; }
+
+ private:
+  Sequence* sequence_;
+  Mesh start_;
+  std::vector<ProgramBlock> blocks_;
+  std::vector<int> param_block_;  // per op: block index of its params or -1
+  std::vector<int> gate_block_;   // per op: block index of its gate logit or -1
+  std::vector<double> logits_;    // per op
+  int num_columns_ = 0;
+  struct FreeColumn {
+    int op;
+    int param;  // -1: the gate
+    int column;
+  };
+  std::vector<FreeColumn> free_columns_;  // ordered by op
+
+  std::vector<Positions<double>> steps_;  // #ops + 1: the start, then each op's output
+  std::vector<double> jacobian_;
+  // Scratch for the forward-mode passes (sized once).
+  Positions<JetT> jet_in_, jet_out_;
+  std::vector<std::vector<JetT>> jet_params_;
+  bool valid_ = false, values_ready_ = false, jacobian_ready_ = false;
+  int num_value_evaluations_ = 0, num_jacobian_evaluations_ = 0;
+};
+
+}  // namespace opgraph

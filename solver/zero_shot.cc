@@ -1,0 +1,591 @@
+#include "solver/zero_shot.h"
+
+#include <Eigen/Eigenvalues>
+
+#include <algorithm>
+#include <chrono>
+#include <cmath>
+#include <limits>
+#include <ostream>
+#include <sstream>
+
+#include "core/geometry.h"
+#include "core/metrics.h"
+#include "ops/sequence.h"
+
+namespace opgraph {
+namespace {
+
+using Clock = std::chrono::steady_clock;
+constexpr double kInf = std::numeric_limits<double>::infinity();
+const char* const kAxisNames[3] = {"X", "Y", "Z"};
+
+Json MakeOp(const std::string& name, Json params) { return {{"op", name}, {"params", std::move(params)}}; }
+
+// A sequence in the controller's fixed layout (see zero_shot.h). Each part is a list of op
+// documents; splitting a fitted document back into parts relies on fits keeping the op count.
+struct Layout {
+  std::vector<Json> profile;  // on the 2x2x2 cube: loop cuts along the long axis, loop scales
+  std::vector<Json> grid;     // then: loop cuts across the other axes, loop scales
+  Json scale, rotate, translate;
+  std::vector<Json> deforms;
+  std::vector<Json> details;  // extrusions (and their insets)
+  bool subdivide = false;
+
+  int NumOps() const {
+    return static_cast<int>(profile.size() + grid.size() + deforms.size() + details.size()) + 3 + (subdivide ? 1 : 0);
+  }
+  // Index of the last op before Subdivision / Rotate: the step whose mesh is the cage.
+  int CageStep() const { return static_cast<int>(profile.size() + grid.size() + deforms.size() + details.size()); }
+
+  Json Document() const {
+    Json ops = Json::array();
+    for (const Json& op : profile) ops.push_back(op);
+    for (const Json& op : grid) ops.push_back(op);
+    ops.push_back(scale);
+    for (const Json& op : deforms) ops.push_back(op);
+    for (const Json& op : details) ops.push_back(op);
+    if (subdivide) ops.push_back(MakeOp("Subdivision", {{"levels", 2}}));
+    ops.push_back(rotate);
+    ops.push_back(translate);
+    return {{"version", kSequenceFormatVersion}, {"start", {{"primitive", "cube"}, {"size", 2.0}}}, {"operations", ops}};
+  }
+
+  // This layout with the parameters of `fitted` (a fit of Document()).
+  Layout WithParameters(const Json& fitted) const {
+    const Json& ops = fitted.at("operations");
+    Layout out = *this;
+    size_t i = 0;
+    for (Json& op : out.profile) op = ops[i++];
+    for (Json& op : out.grid) op = ops[i++];
+    // A loop lies in a plane across its cut axis, so scaling along that axis about the loop's
+    // median does nothing; the fit leaves it drifting (to 1e4 and more), and Blender's float
+    // coordinates would turn that into real offsets. Pin it to 1.
+    for (std::vector<Json>* part : {&out.profile, &out.grid}) {
+      for (Json& op : *part) {
+        if (op["op"] != "EdgeLoopAffineScale") continue;
+        for (int axis = 0; axis < 3; ++axis) {
+          if (!op["params"]["verts"]["box"][0][axis].is_null()) op["params"]["scale"][axis] = 1.0;
+        }
+      }
+    }
+    out.scale = ops[i++];
+    for (Json& op : out.deforms) op = ops[i++];
+    for (Json& op : out.details) op = ops[i++];
+    if (subdivide) ++i;
+    out.rotate = ops[i++];
+    out.translate = ops[i++];
+    return out;
+  }
+};
+
+struct Trial {
+  Layout layout;
+  double loss = kInf;
+  bool ok = false;
+};
+
+class Controller {
+ public:
+  Controller(const Target& target, const ZeroShotOptions& options)
+      : target_(target), options_(options), start_(Clock::now()) {
+    search_options_.seed = options.seed;
+    search_options_.num_threads = options.num_threads;
+    search_options_.optimizer = options.optimizer;
+    search_options_.num_output_samples = 1500;
+    search_options_.num_target_samples = 1500;
+    search_options_.max_outer_iterations = 8;
+    search_options_.max_inner_iterations = 20;
+    final_options_ = search_options_;
+    final_options_.num_output_samples = 4000;
+    final_options_.num_target_samples = 4000;
+    final_options_.max_outer_iterations = 15;
+    final_options_.max_inner_iterations = 30;
+  }
+
+  ZeroShotResult Run() {
+    Trial best = FitGlobalAffine();
+    if (!best.ok) throw std::runtime_error("the global affine fit failed");
+    best = ConsiderSmoothing(best);
+    // Stages feed each other (a bend lets a profile help, a profile gives extrusions faces), so
+    // they repeat until a whole pass changes nothing.
+    for (int pass = 0; pass < 3 && InBudget(); ++pass) {
+      const double before = best.loss;
+      best = StageProfile(best);
+      best = StageDeforms(best);
+      best = StageHoles(best);
+      best = RepeatDetails(best);
+      best = StageGrid(best);
+      best = ConsiderSmoothing(best);
+      if (!(best.loss < before)) break;
+    }
+    return Finish(best);
+  }
+
+ private:
+  bool InBudget() const { return Seconds() < options_.time_budget_seconds; }
+  double Seconds() const { return std::chrono::duration<double>(Clock::now() - start_).count(); }
+
+  Trial Fit(const Layout& layout, const FitterOptions& options) {
+    Trial trial;
+    trial.layout = layout;
+    if (layout.NumOps() > options_.max_ops) return trial;
+    try {
+      Sequence sequence = ParseSequence(layout.Document());
+      const FitSummary summary = FitSequence(target_, &sequence, options);
+      ++num_fits_;
+      trial.layout = layout.WithParameters(SequenceToJson(sequence));
+      // The written sequence must replay: its selectors re-resolve at the fitted parameters.
+      Sequence replay = ParseSequence(trial.layout.Document());
+      EvaluateSequence(&replay);
+      trial.loss = summary.final_loss;
+      trial.ok = std::isfinite(trial.loss);
+    } catch (const std::exception&) {
+      trial.ok = false;  // a proposal whose targets vanish or whose fit fails is rejected
+    }
+    return trial;
+  }
+
+  // Fits `propose`'s change of `best`; keeps it when the loss falls by more than the price of
+  // the ops it adds.
+  template <typename Propose>
+  Trial Consider(const std::string& stage, const Trial& best, Propose propose) {
+    if (!InBudget()) return best;
+    Layout layout = best.layout;
+    const std::string what = propose(&layout);
+    if (what.empty()) return best;
+    const Trial trial = Fit(layout, search_options_);
+    const int added = std::max(1, layout.NumOps() - best.layout.NumOps());
+    const bool accept = trial.ok && trial.loss < best.loss * std::pow(1.0 - options_.min_relative_gain, added);
+    Log(stage, best, trial, accept, what);
+    return accept ? trial : best;
+  }
+
+  void Log(const std::string& stage, const Trial& before, const Trial& after, bool accepted, const std::string& what) {
+    std::ostringstream line;
+    line.precision(3);
+    line << "[zero-shot] " << stage << ": " << what << ": loss " << before.loss << " -> "
+         << (after.ok ? after.loss : kInf) << (accepted ? " accepted" : " rejected") << " ("
+         << (accepted ? after : before).layout.NumOps() << " ops, " << num_fits_ << " fits, " << std::fixed
+         << Seconds() << " s)";
+    decisions_.push_back(line.str());
+    if (options_.progress != nullptr) *options_.progress << line.str() << std::endl;
+  }
+
+  // Cube scaled to the target's extent along its principal axes (identity when they are close
+  // to the coordinate axes, as for models built axis-aligned), rotated and translated onto it.
+  Trial FitGlobalAffine() {
+    const Positions<double>& points = target_.points();
+    Vec3d mean = Vec3d::Zero();
+    for (const Vec3d& p : points) mean += p;
+    mean /= static_cast<double>(points.size());
+    Eigen::Matrix3d covariance = Eigen::Matrix3d::Zero();
+    for (const Vec3d& p : points) covariance += (p - mean) * (p - mean).transpose();
+    Eigen::SelfAdjointEigenSolver<Eigen::Matrix3d> eigen(covariance);
+    Eigen::Matrix3d principal = eigen.eigenvectors();
+    if (principal.determinant() < 0) principal.col(2) *= -1;
+    // Models are often built axis-aligned, and principal axes of (near) equal variance are
+    // arbitrary: the coordinate axes are tried too, and kept unless clearly worse.
+    Trial aligned = FitPose(Eigen::Matrix3d::Identity());
+    const Vec3d aligned_half = half_extent_;
+    Trial rotated = FitPose(principal);
+    if (aligned.ok && !(rotated.loss < 0.7 * aligned.loss)) {
+      half_extent_ = aligned_half;
+      Log("affine", aligned, aligned, true, "Scale, Rotate, Translate (coordinate axes)");
+      return aligned;
+    }
+    Log("affine", rotated, rotated, true, "Scale, Rotate, Translate (principal axes)");
+    return rotated;
+  }
+
+  Trial FitPose(const Eigen::Matrix3d& world_from_local) {
+    const Positions<double>& points = target_.points();
+    Vec3d lo = Vec3d::Constant(kInf), hi = Vec3d::Constant(-kInf);
+    for (const Vec3d& p : points) {
+      const Vec3d q = world_from_local.transpose() * p;
+      lo = lo.cwiseMin(q), hi = hi.cwiseMax(q);
+    }
+    const double extent = (hi - lo).maxCoeff();
+    const Vec3d half = ((hi - lo) / 2).cwiseMax(Vec3d::Constant(1e-3 * extent));
+    // R = Rz Ry Rx: Eigen's eulerAngles(2, 1, 0) returns (z, y, x).
+    const Vec3d zyx = world_from_local.eulerAngles(2, 1, 0);
+    Layout layout;
+    layout.scale = MakeOp("GlobalAffineScale", {{"scale", ToJson(half)}});
+    layout.rotate = MakeOp("GlobalAffineRotate",
+                           {{"rotation_deg", ToJson(Vec3d(RadToDeg(zyx[2]), RadToDeg(zyx[1]), RadToDeg(zyx[0])))}});
+    layout.translate = MakeOp("GlobalAffineTranslate", {{"offset", ToJson(Vec3d(world_from_local * ((hi + lo) / 2)))}});
+    half_extent_ = half;
+    return Fit(layout, search_options_);
+  }
+
+  Trial ConsiderSmoothing(const Trial& best) {
+    return Consider("smooth", best, [&](Layout* l) -> std::string {
+      if (l->subdivide) return "";
+      l->subdivide = true;
+      return "+Subdivision(2)";
+    });
+  }
+
+  int LongAxis() const {
+    int axis = 0;
+    for (int a = 1; a < 3; ++a) {
+      if (half_extent_[a] > half_extent_[axis]) axis = a;
+    }
+    return axis;
+  }
+
+  // LoopCut along `axis` on the cube with an EdgeLoopAffineScale per new loop (`expect`: the
+  // loop's vertex count, < 0 when earlier cuts make it vary).
+  static std::vector<Json> LoopOps(int axis, int cuts, int expect) {
+    std::vector<Json> ops = {MakeOp("LoopCut", {{"axis", kAxisNames[axis]}, {"cuts", cuts}, {"near", {0, 0, 0}}})};
+    const double spacing = 2.0 / (cuts + 1);
+    for (int i = 0; i < cuts; ++i) {
+      const double at = -1.0 + spacing * (i + 1);
+      Json lo = {nullptr, nullptr, nullptr}, hi = {nullptr, nullptr, nullptr};
+      lo[axis] = at - 0.3 * spacing;
+      hi[axis] = at + 0.3 * spacing;
+      Json verts = {{"box", {lo, hi}}};
+      if (expect > 0) verts["expect"] = expect;
+      ops.push_back(MakeOp("EdgeLoopAffineScale", {{"verts", verts}, {"scale", {1.0, 1.0, 1.0}}}));
+    }
+    return ops;
+  }
+
+  Trial StageProfile(Trial best) {
+    const int axis = LongAxis();
+    for (int cuts : {2, 4, 8}) {
+      best = Consider("profile", best, [&](Layout* l) -> std::string {
+        const int loops_now = static_cast<int>(l->profile.size()) - 1;
+        if (loops_now >= cuts) return "";
+        l->profile = LoopOps(axis, cuts, 4);
+        return "LoopCut " + std::string(kAxisNames[axis]) + " x" + std::to_string(cuts) + " + " +
+               std::to_string(cuts) + " EdgeLoopAffineScale";
+      });
+    }
+    return best;
+  }
+
+  Trial StageDeforms(Trial best) {
+    const int axis = LongAxis();
+    struct Deform {
+      std::string op;
+      int axis;
+      Json params;
+    };
+    // Starts on both sides of the identity, and a large twist (LM does not cross the twist
+    // of a square section by a quarter turn from a small start).
+    std::vector<Deform> deforms = {{"SimpleDeformTwist", axis, {{"angle_deg", 30.0}}},
+                                   {"SimpleDeformTwist", axis, {{"angle_deg", -30.0}}},
+                                   {"SimpleDeformTwist", axis, {{"angle_deg", 150.0}}},
+                                   {"SimpleDeformTwist", axis, {{"angle_deg", -150.0}}},
+                                   {"SimpleDeformTaper", axis, {{"factor", 0.2}}},
+                                   {"SimpleDeformTaper", axis, {{"factor", -0.2}}}};
+    for (int a = 0; a < 3; ++a) {
+      if (a == axis) continue;
+      deforms.push_back({"SimpleDeformBend", a, {{"angle_deg", 30.0}}});
+      deforms.push_back({"SimpleDeformBend", a, {{"angle_deg", -30.0}}});
+    }
+    for (const Deform& deform : deforms) {
+      best = Consider("deform", best, [&](Layout* l) -> std::string {
+        for (const Json& op : l->deforms) {
+          if (op["op"] == deform.op && op["params"]["axis"] == kAxisNames[deform.axis]) return "";
+        }
+        Json params = deform.params;
+        params["axis"] = kAxisNames[deform.axis];
+        l->deforms.push_back(MakeOp(deform.op, params));
+        std::string what = "+" + deform.op + " " + kAxisNames[deform.axis];
+        // Deformations need rings along the long axis to bend smoothly.
+        if (l->profile.empty()) {
+          l->profile = {MakeOp("LoopCut", {{"axis", kAxisNames[axis]}, {"cuts", 7}, {"near", {0, 0, 0}}})};
+          what += " (with LoopCut " + std::string(kAxisNames[axis]) + " x7)";
+        }
+        return what;
+      });
+    }
+    return best;
+  }
+
+  // Holes through the shape (a ring, a handle's eye): a Boolean difference with a prism or a box
+  // through the centre along each axis; the fit sizes and places it.
+  Trial StageHoles(Trial best) {
+    for (const char* primitive : {"prism8", "cube"}) {
+      for (int axis = 0; axis < 3 && InBudget(); ++axis) {
+        best = Consider("hole", best, [&](Layout* l) -> std::string {
+          for (const Json& op : l->details) {
+            if (op["op"] == "Boolean") return "";
+          }
+          Vec3d size = half_extent_;  // half the extent across the axis, through it entirely
+          size[axis] = 6 * half_extent_[axis];
+          // The prism's axis is +Z: turn it onto `axis`.
+          Vec3d rotation_deg = Vec3d::Zero();
+          if (axis == 0) rotation_deg.y() = 90;
+          if (axis == 1) rotation_deg.x() = 90;
+          Vec3d size_in_primitive = size;
+          if (axis == 0) size_in_primitive = Vec3d(size.z(), size.y(), size.x());
+          if (axis == 1) size_in_primitive = Vec3d(size.x(), size.z(), size.y());
+          l->details.push_back(MakeOp("Boolean", {{"operation", "DIFFERENCE"},
+                                                  {"primitive", primitive},
+                                                  {"size", ToJson(size_in_primitive)},
+                                                  {"rotation_deg", ToJson(rotation_deg)},
+                                                  {"location", {0.0, 0.0, 0.0}}}));
+          return std::string("+Boolean difference ") + primitive + " along " + kAxisNames[axis];
+        });
+      }
+    }
+    return best;
+  }
+
+  Trial RepeatDetails(Trial best) {
+    for (int round = 0; round < 6 && InBudget(); ++round) {
+      const double before = best.loss;
+      best = StageDetails(best);
+      if (!(best.loss < before)) break;
+    }
+    return best;
+  }
+
+  // Loop cuts across two axes give faces where extrusions can start (legs at a table's
+  // corners, arms in the middle of a side). Cuts alone do not change the surface, so each grid
+  // is judged with the extrusions it enables (one step of lookahead).
+  Trial StageGrid(Trial best) {
+    if (!best.layout.grid.empty()) return best;
+    for (int a = 0; a < 3 && InBudget(); ++a) {
+      for (int b = a + 1; b < 3 && InBudget(); ++b) {
+        Layout layout = best.layout;
+        // Loop scales let the new faces move to where the extrusions belong (a leg at a corner).
+        layout.grid = LoopOps(a, 2, layout.profile.empty() ? 4 : -1);
+        const std::vector<Json> second = LoopOps(b, 2, -1);
+        layout.grid.insert(layout.grid.end(), second.begin(), second.end());
+        Trial trial = Fit(layout, search_options_);
+        if (!trial.ok) continue;
+        const std::string what = std::string("LoopCut grid ") + kAxisNames[a] + kAxisNames[b];
+        Log("grid", best, trial, false, what + " (before its extrusions)");
+        trial = RepeatDetails(trial);
+        const int added = trial.layout.NumOps() - best.layout.NumOps();
+        const bool accept = trial.loss < best.loss * std::pow(1.0 - options_.min_relative_gain, added);
+        Log("grid", best, trial, accept, what + " with its extrusions");
+        if (accept) best = trial;
+      }
+    }
+    return best;
+  }
+
+  // Extrude proposals from the residuals: target samples, brought into the cube's frame, are
+  // assigned to the nearest cage face; faces with many samples far outside (protrusion) or
+  // inside (cavity) along their normal become candidates.
+  Trial StageDetails(Trial best) {
+    Sequence sequence = ParseSequence(best.layout.Document());
+    const std::vector<Mesh> steps = EvaluateSequence(&sequence);
+    const Mesh& cage = steps[best.layout.CageStep()];
+    const Json& rotation = best.layout.rotate["params"]["rotation_deg"];
+    const Json& offset = best.layout.translate["params"]["offset"];
+    const Eigen::Matrix3d world_from_local =
+        EulerXYZToMatrix(DegToRad(rotation[0]), DegToRad(rotation[1]), DegToRad(rotation[2]));
+    const Vec3d translation(offset[0], offset[1], offset[2]);
+    const int num_faces = cage.NumFaces();
+    std::vector<Vec3d> centroids(num_faces), normals(num_faces);
+    for (int f = 0; f < num_faces; ++f) {
+      centroids[f] = FaceCentroid(cage.vertices, cage.faces[f]);
+      normals[f] = SafeNormalized(FaceAreaNormal(cage.vertices, cage.faces[f]));
+    }
+    const double diagonal = 2.0 * half_extent_.norm();
+    const double threshold = 0.04 * diagonal;
+    std::vector<std::vector<double>> outside(num_faces), inside(num_faces);
+    // Mean squared distance of the outside samples from the face's normal line: a narrow
+    // protrusion starts from a narrowed cap (the Extrude's width).
+    std::vector<double> outside_spread(num_faces, 0.0);
+    const Positions<double>& points = target_.points();
+    const size_t stride = std::max<size_t>(1, points.size() / 4000);
+    for (size_t i = 0; i < points.size(); i += stride) {
+      const Vec3d q = world_from_local.transpose() * (points[i] - translation);
+      int nearest = 0;
+      double nearest_distance = kInf;
+      for (int f = 0; f < num_faces; ++f) {
+        const double d = (q - centroids[f]).squaredNorm();
+        if (d < nearest_distance) nearest_distance = d, nearest = f;
+      }
+      const double along = (q - centroids[nearest]).dot(normals[nearest]);
+      if (along > threshold) {
+        outside[nearest].push_back(along);
+        outside_spread[nearest] += ((q - centroids[nearest]) - along * normals[nearest]).squaredNorm();
+      }
+      if (along < -threshold) inside[nearest].push_back(-along);
+    }
+    const size_t min_support = std::max<size_t>(5, points.size() / stride / 100);
+    struct Candidate {
+      int face;
+      double height;  // signed
+      size_t support;
+      double width = 1;
+    };
+    std::vector<Candidate> candidates;
+    for (int f = 0; f < num_faces; ++f) {
+      for (int sign : {1, -1}) {
+        std::vector<double>& d = sign > 0 ? outside[f] : inside[f];
+        if (d.size() < min_support) continue;
+        std::nth_element(d.begin(), d.begin() + d.size() * 3 / 4, d.end());
+        Candidate candidate{f, sign * d[d.size() * 3 / 4], d.size()};
+        if (sign > 0) {
+          // Uniform samples over a square of side L lie sqrt(1/6) L from its centre (RMS).
+          const double face_spread = std::sqrt(FaceAreaNormal(cage.vertices, cage.faces[f]).norm() / 6.0);
+          const double spread = std::sqrt(outside_spread[f] / static_cast<double>(d.size()));
+          candidate.width = std::clamp(spread / std::max(face_spread, 1e-12), 0.1, 1.0);
+        }
+        candidates.push_back(candidate);
+      }
+    }
+    std::sort(candidates.begin(), candidates.end(), [](const Candidate& a, const Candidate& b) {
+      return a.support * std::abs(a.height) > b.support * std::abs(b.height);
+    });
+    // Faces wanting the same growth (a table's four legs, a cross's arms) are proposed
+    // together, as one Extrude on all of them, before the single faces.
+    std::vector<std::vector<Candidate>> proposals;
+    std::vector<bool> grouped(candidates.size(), false);
+    for (size_t i = 0; i < candidates.size(); ++i) {
+      std::vector<Candidate> group = {candidates[i]};
+      for (size_t j = i + 1; j < candidates.size(); ++j) {
+        const Candidate& a = candidates[i];
+        const Candidate& b = candidates[j];
+        if (grouped[j] || (a.height > 0) != (b.height > 0)) continue;
+        const bool similar_height = std::abs(a.height - b.height) < 0.3 * std::abs(a.height);
+        const bool same_direction = normals[a.face].dot(normals[b.face]) > 0.9;
+        // Symmetric growth on opposite or perpendicular sides counts as a pattern too.
+        const bool same_size = std::abs(static_cast<double>(b.support) - static_cast<double>(a.support)) < 0.5 * a.support;
+        if (similar_height && (same_direction || same_size)) group.push_back(b), grouped[j] = true;
+      }
+      if (group.size() > 1) proposals.push_back(group);
+    }
+    for (size_t i = 0; i < candidates.size() && i < 6; ++i) proposals.push_back({candidates[i]});
+    for (const std::vector<Candidate>& group : proposals) {
+      best = Consider("detail", best, [&](Layout* l) -> std::string {
+        Json centers = Json::array();
+        double height = 0, width = 0;
+        for (const Candidate& c : group) {
+          centers.push_back(ToJson(centroids[c.face]));
+          height += c.height / static_cast<double>(group.size());
+          width += c.width / static_cast<double>(group.size());
+        }
+        Json faces = {{"centers", centers}, {"expect", group.size()}};
+        // A shared normal keeps the selector on the same faces when an edit moves their centres.
+        bool shared_normal = true;
+        for (const Candidate& c : group) shared_normal = shared_normal && normals[c.face].dot(normals[group[0].face]) > 0.99;
+        if (shared_normal) faces["normal"] = ToJson(normals[group[0].face]), faces["min_dot"] = 0.9;
+        const std::string count = group.size() > 1 ? " x" + std::to_string(group.size()) : "";
+        if (height > 0) {
+          l->details.push_back(
+              MakeOp("Extrude", {{"faces", faces}, {"height", height}, {"width", width}, {"mode", "individual"}}));
+          return "+Extrude out" + count + " " + std::to_string(height) + " width " + std::to_string(width);
+        }
+        // A cavity: the faces pushed in, each through a narrowed cap (a hole with a rim).
+        l->details.push_back(
+            MakeOp("Extrude", {{"faces", faces}, {"height", height}, {"width", 0.7}, {"mode", "individual"}}));
+        return "+Extrude in" + count + " " + std::to_string(height);
+      });
+    }
+    return best;
+  }
+
+  // Drops ops the result does not need: each op in turn (last first) is removed when the
+  // sequence without it still replays and its Chamfer distance to the target grows by under 2%.
+  Json Simplify(Json document) {
+    MetricsOptions metrics_options;
+    metrics_options.num_samples = 3000;
+    metrics_options.seed = options_.seed;
+    auto chamfer = [&](const Json& candidate) {
+      try {
+        Sequence sequence = ParseSequence(candidate);
+        return ComputeShapeMetrics(EvaluateSequence(&sequence).back(), target_.shape(), metrics_options).chamfer.Sum();
+      } catch (const std::exception&) {
+        return kInf;
+      }
+    };
+    double current = chamfer(document);
+    for (int k = static_cast<int>(document["operations"].size()) - 1; k >= 0; --k) {
+      if (document["operations"].size() == 1) break;
+      Json candidate = document;
+      const std::string name = candidate["operations"][k]["op"];
+      candidate["operations"].erase(static_cast<size_t>(k));
+      const double without = chamfer(candidate);
+      if (without <= current * 1.02 + 1e-7) {
+        std::ostringstream line;
+        line << "[zero-shot] simplify: removed op " << k << " (" << name << "): Chamfer " << current << " -> " << without;
+        decisions_.push_back(line.str());
+        if (options_.progress != nullptr) *options_.progress << line.str() << std::endl;
+        document = candidate;
+        current = without;
+      }
+    }
+    return document;
+  }
+
+  ZeroShotResult Finish(const Trial& best) {
+    // Gates: ops that do not earn their place are pruned, then a polishing fit.
+    Sequence sequence = ParseSequence(best.layout.Document());
+    FitterOptions options = final_options_;
+    options.fit_gates = true;
+    double loss = best.loss;
+    Json document = best.layout.Document();
+    try {
+      const FitSummary summary = FitSequence(target_, &sequence, options);
+      ++num_fits_;
+      Json fitted = SequenceToJson(sequence);
+      Sequence replay = ParseSequence(fitted);
+      EvaluateSequence(&replay);
+      // Pruning must not undo what the search paid for.
+      if (summary.final_loss <= best.loss * (1 + options_.min_relative_gain)) {
+        document = fitted;
+        loss = summary.final_loss;
+      }
+      std::ostringstream line;
+      line << "[zero-shot] prune: " << summary.pruned_ops.size() << " op(s) below the gate threshold: loss "
+           << best.loss << " -> " << summary.final_loss << (document == fitted ? " accepted" : " rejected");
+      decisions_.push_back(line.str());
+      if (options_.progress != nullptr) *options_.progress << line.str() << std::endl;
+    } catch (const std::exception& e) {
+      decisions_.push_back(std::string("[zero-shot] final gate fit failed, kept the searched sequence: ") + e.what());
+    }
+    if (document == best.layout.Document()) {  // polish the searched sequence with more samples
+      const Trial polished = Fit(best.layout, final_options_);
+      if (polished.ok) document = polished.layout.Document(), loss = polished.loss;
+    }
+    document = Simplify(document);
+    ZeroShotResult result;
+    result.sequence = document;
+    result.loss = loss;
+    result.num_fits = num_fits_;
+    result.seconds = Seconds();
+    result.decisions = decisions_;
+    if (options_.progress != nullptr) {
+      *options_.progress << "[zero-shot] final: " << document["operations"].size() << " ops, loss " << loss << ", "
+                         << num_fits_ << " fits, " << result.seconds << " s" << std::endl;
+    }
+    return result;
+  }
+
+  const Target& target_;
+  ZeroShotOptions options_;
+  FitterOptions search_options_;
+  FitterOptions final_options_;
+  Clock::time_point start_;
+  Vec3d half_extent_ = Vec3d::Ones();
+  int num_fits_ = 0;
+  std::vector<std::string> decisions_;
+};
+
+}  // namespace
+
+std::string ZeroShotOptions::Check() const {
+  if (!(time_budget_seconds > 0)) return "time budget must be positive";
+  if (max_ops < 3) return "max ops must be at least 3";
+  if (!(min_relative_gain >= 0 && min_relative_gain < 1)) return "min relative gain must be in [0, 1)";
+  if (num_threads < 1) return "threads must be at least 1";
+  return "";
+}
+
+ZeroShotResult RecoverSequence(const Target& target, const ZeroShotOptions& options) {
+  const std::string problem = options.Check();
+  if (!problem.empty()) throw std::invalid_argument(problem);
+  return Controller(target, options).Run();
+}
+
+}  // namespace opgraph

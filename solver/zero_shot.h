@@ -1,0 +1,51 @@
+// Zero-shot recovery of a design sequence: the outer combinatorial controller around the
+// Ceres fits. It stages discrete decisions (propose, fit, accept or reject, expand):
+//   1. global affine: a cube scaled, rotated and translated onto the target (principal axes);
+//   2. smoothness: Subdivision (level 2) at the end of the structure, kept if it helps;
+//   3. profile: LoopCut along the longest axis with an EdgeLoopAffineScale per loop;
+//   4. deformations: SimpleDeform Twist, Taper and Bend along that axis;
+//   5. protrusions and cavities: Extrude on the faces where the target lies farthest outside
+//      (or inside) the current cage, found from the residuals;
+//   6. pruning: op gates fitted with the sparsity stage, ops below the threshold removed,
+//      then a polishing fit.
+// A proposal is accepted when the data loss falls by more than `min_relative_gain`, which is
+// the price of a longer sequence. Ops act in the cube's own frame (cube -> loop cuts ->
+// Scale -> deformations -> extrusions -> Subdivision -> Rotate -> Translate), so element
+// selectors stay valid while the fit moves the global pose.
+#pragma once
+
+#include <cstdint>
+#include <iosfwd>
+#include <string>
+#include <vector>
+
+#include "ops/params.h"
+#include "solver/fitter.h"
+#include "solver/target.h"
+
+namespace opgraph {
+
+struct ZeroShotOptions {
+  double time_budget_seconds = 90;  // the controller stops proposing after this
+  int max_ops = 24;
+  double min_relative_gain = 0.08;  // a proposal must lower the loss by this fraction
+  uint64_t seed = 1;
+  int num_threads = 1;
+  Optimizer optimizer = Optimizer::kCeres;
+  std::ostream* progress = nullptr;  // one line per decision when set
+  // Empty when valid, else the problem.
+  std::string Check() const;
+};
+
+struct ZeroShotResult {
+  Json sequence;         // the recovered sequence document (sequence.json)
+  double loss = 0;       // final data loss (unit box, mean squared, both directions)
+  int num_fits = 0;      // Ceres (or Adam) fits run
+  double seconds = 0;
+  std::vector<std::string> decisions;  // one line per accepted or rejected proposal
+};
+
+// Recovers a sequence for `target`. Deterministic for a given seed.
+ZeroShotResult RecoverSequence(const Target& target, const ZeroShotOptions& options);
+
+}  // namespace opgraph

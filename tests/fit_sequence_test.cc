@@ -1,0 +1,123 @@
+// fit_sequence end to end: a target in its own frame and units (scaled by 50 and moved), a
+// perturbed skeleton; the written result must match the target, re-evaluate from the written
+// sequence.json, and be rebuilt by real Blender from rebuild_blender.py. Bad input: one line,
+// exit code 2, nothing written.
+#include <gtest/gtest.h>
+
+#include <filesystem>
+#include <fstream>
+#include <sys/wait.h>
+
+#include "core/metrics.h"
+#include "core/obj_io.h"
+#include "core/surface_distance.h"
+#include "ops/sequence.h"
+
+namespace opgraph {
+namespace {
+
+namespace fs = std::filesystem;
+
+std::string Quote(const std::string& s) { return "'" + s + "'"; }
+
+const char* kTruth = R"({"operations": [
+  {"op": "GlobalAffineScale", "params": {"scale": [30, 40, 90]}},
+  {"op": "LoopCut", "params": {"axis": "Z", "cuts": 4, "near": [30, 40, 0]}},
+  {"op": "Extrude", "params": {"faces": {"normal": [0, 0, 1], "expect": 1}, "height": 40, "width": 0.6}},
+  {"op": "SimpleDeformTwist", "params": {"axis": "Z", "angle_deg": 60}},
+  {"op": "GlobalAffineTranslate", "params": {"offset": [500, -200, 1000]}}]})";
+
+const char* kInit = R"({"operations": [
+  {"op": "GlobalAffineScale", "params": {"scale": [25, 48, 75]}},
+  {"op": "LoopCut", "params": {"axis": "Z", "cuts": 4, "near": [30, 40, 0]}},
+  {"op": "Extrude", "params": {"faces": {"normal": [0, 0, 1], "expect": 1}, "height": 30, "width": 0.75}},
+  {"op": "SimpleDeformTwist", "params": {"axis": "Z", "angle_deg": 45}},
+  {"op": "GlobalAffineTranslate", "params": {"offset": [480, -180, 1010]}}]})";
+
+int RunCommand(const std::string& command) {
+  const int status = std::system(command.c_str());
+  return WIFEXITED(status) ? WEXITSTATUS(status) : -1;
+}
+
+TEST(FitSequence, FitsInTheInputFrameAndBlenderRebuildsIt) {
+  const fs::path dir = fs::temp_directory_path() / "opgraph_fit_sequence_test";
+  fs::remove_all(dir);
+  fs::create_directories(dir);
+  Sequence truth = ParseSequence(Json::parse(kTruth));
+  const Mesh target = EvaluateSequence(&truth).back();
+  WriteObj(target, (dir / "target.obj").string());
+  std::ofstream(dir / "init.json") << kInit;
+  const fs::path out = dir / "out";
+  ASSERT_EQ(RunCommand(std::string(OPGRAPH_FIT_SEQUENCE) + " --input " + Quote((dir / "target.obj").string()) + " --init " +
+                Quote((dir / "init.json").string()) + " --out " + Quote(out.string()) + " --seed 3 > " +
+                Quote((dir / "log.txt").string())),
+            0);
+  for (const char* name : {"sequence.json", "result.obj", "rebuild_blender.py", "metrics.json"}) {
+    EXPECT_TRUE(fs::exists(out / name)) << name;
+  }
+  const Mesh result = ReadObj((out / "result.obj").string());
+  EXPECT_LT(SymmetricSurfaceDistanceRelative(target, result), 1e-6);
+
+  std::ifstream metrics_file(out / "metrics.json");
+  const Json metrics = Json::parse(metrics_file);
+  EXPECT_LT(metrics["shape"]["chamfer"]["sum"].get<double>(), 1e-6);
+  EXPECT_LT(metrics["fit"]["final_loss"].get<double>(), 1e-3 * metrics["fit"]["initial_loss"].get<double>());
+  // The unit box: the target's longest side is its height, 2 x 90 + 40 (before the twist).
+  EXPECT_NEAR(metrics["frame"]["scale"].get<double>(), 1.0 / 220, 1e-12);
+
+  Sequence fitted = LoadSequence((out / "sequence.json").string());
+  const Mesh again = EvaluateSequence(&fitted).back();
+  EXPECT_LT(SymmetricSurfaceDistanceRelative(result, again), 1e-6);
+
+  const fs::path blender_obj = dir / "blender.obj";
+  ASSERT_EQ(RunCommand("blender -b --factory-startup --python-exit-code 1 -P " + Quote((out / "rebuild_blender.py").string()) +
+                " -- " + Quote(blender_obj.string()) + " > " + Quote((dir / "blender.log").string()) + " 2>&1"),
+            0);
+  const Mesh rebuilt = ReadObj(blender_obj.string());
+  const double distance = SymmetricSurfaceDistanceRelative(result, rebuilt);
+  std::printf("[fit_sequence] Blender rebuild distance %.2e (relative), %d vs %d vertices\n", distance,
+              rebuilt.NumVertices(), result.NumVertices());
+  EXPECT_LT(distance, 1e-6);
+  EXPECT_EQ(rebuilt.NumVertices(), result.NumVertices());
+  fs::remove_all(dir);
+}
+
+TEST(FitSequence, BadInputFailsWithOneLineAndWritesNothing) {
+  const fs::path dir = fs::temp_directory_path() / "opgraph_fit_sequence_bad";
+  fs::remove_all(dir);
+  fs::create_directories(dir);
+  WriteObj(MakeCube(2.0), (dir / "cube.obj").string());
+  std::ofstream(dir / "init.json") << kInit;
+  std::ofstream(dir / "broken.json") << R"({"operations": [{"op": "Extrude", "params": {"height": "x"}}]})";
+  std::ofstream(dir / "empty.obj") << "";
+  const std::string cube = Quote((dir / "cube.obj").string()), init = Quote((dir / "init.json").string());
+  const struct {
+    std::string args, expected;
+  } cases[] = {
+      {"--input " + cube + " --init " + Quote((dir / "missing.json").string()), "cannot open"},
+      {"--input " + cube + " --init " + Quote((dir / "broken.json").string()), "operation 0 (Extrude)"},
+      {"--input " + Quote((dir / "empty.obj").string()) + " --init " + init, "empty"},
+      {"--input " + cube + " --init " + init + " --optimizer sgd", "--optimizer"},
+      {"--input " + cube + " --init " + init + " --seed x", "--seed"},
+      {"--init " + init, "usage"},
+      {"--input " + cube + " --time-budget 0", "--time-budget"},
+  };
+  for (const auto& c : cases) {
+    const fs::path out = dir / "out";
+    const fs::path err = dir / "stderr.txt";
+    EXPECT_EQ(RunCommand(std::string(OPGRAPH_FIT_SEQUENCE) + " " + c.args + " --out " + Quote(out.string()) + " > /dev/null 2> " +
+                  Quote(err.string())),
+              2)
+        << c.args;
+    EXPECT_FALSE(fs::exists(out)) << c.args;
+    std::ifstream in(err);
+    std::string line, extra;
+    std::getline(in, line);
+    EXPECT_FALSE(std::getline(in, extra)) << "more than one line: " << extra;
+    EXPECT_NE(line.find(c.expected), std::string::npos) << line;
+  }
+  fs::remove_all(dir);
+}
+
+}  // namespace
+}  // namespace opgraph
