@@ -113,6 +113,7 @@ class Controller {
       const double before = best.loss;
       best = StageProfile(best);
       best = StageDeforms(best);
+      best = StageBevel(best);
       best = StageHoles(best);
       best = RepeatDetails(best);
       best = StageGrid(best);
@@ -331,6 +332,30 @@ class Controller {
           return std::string("+Boolean difference ") + primitive + " along " + kAxisNames[axis];
         });
       }
+    }
+    return best;
+  }
+
+  // Rounded edges: Bevel on the edges sharper than 30 degrees, first with 5 segments, then the
+  // segment count searched (same op count, so the lowest loss wins).
+  Trial StageBevel(Trial best) {
+    for (const Json& op : best.layout.details) {
+      if (op["op"] == "Bevel") return best;
+    }
+    const double width = 0.05 * half_extent_.minCoeff();
+    best = Consider("bevel", best, [&](Layout* l) -> std::string {
+      l->details.push_back(MakeOp("Bevel", {{"width", width}, {"segments", 5}, {"limit_method", "ANGLE"}, {"angle_limit_deg", 30.0}}));
+      return "+Bevel (5 segments)";
+    });
+    if (best.layout.details.empty() || best.layout.details.back()["op"] != "Bevel") return best;
+    for (int segments : {1, 2, 3, 4, 6, 9}) {
+      if (!InBudget()) break;
+      Layout layout = best.layout;
+      layout.details.back()["params"]["segments"] = segments;
+      const Trial trial = Fit(layout, search_options_);
+      const bool accept = trial.ok && trial.loss < best.loss;
+      Log("bevel", best, trial, accept, "segments " + std::to_string(segments));
+      if (accept) best = trial;
     }
     return best;
   }
