@@ -90,6 +90,7 @@ TEST(FitSequence, BadInputFailsWithOneLineAndWritesNothing) {
   std::ofstream(dir / "init.json") << kInit;
   std::ofstream(dir / "broken.json") << R"({"operations": [{"op": "Extrude", "params": {"height": "x"}}]})";
   std::ofstream(dir / "empty.obj") << "";
+  std::ofstream(dir / "garbage.stl") << "\x01\x02 not a mesh";
   const std::string cube = Quote((dir / "cube.obj").string()), init = Quote((dir / "init.json").string());
   const struct {
     std::string args, expected;
@@ -100,6 +101,8 @@ TEST(FitSequence, BadInputFailsWithOneLineAndWritesNothing) {
       {"--input " + cube + " --init " + init + " --optimizer sgd", "--optimizer"},
       {"--input " + cube + " --init " + init + " --seed x", "--seed"},
       {"--init " + init, "usage"},
+      {"--input " + Quote((dir / "garbage.stl").string()), "cannot read mesh"},
+      {"--input " + Quote((dir / "missing.ply").string()), "cannot open file"},
       {"--input " + cube + " --time-budget 0", "--time-budget"},
   };
   for (const auto& c : cases) {
