@@ -63,6 +63,7 @@ int DominantAxis(const Vec3d& a, const Vec3d& b, const Vec3d& c) {
 // each group, with the group's outline as constraints. A cocircular tie is never flipped.
 void DelaunayFlips(const Positions<double>& vertices, const std::vector<int>& group, const std::vector<int>& axis,
                    std::vector<std::array<int, 3>>* triangles) {
+  if (vertices.empty()) return;
   Vec3d lo = vertices[0], hi = vertices[0];
   for (const Vec3d& v : vertices) lo = lo.cwiseMin(v), hi = hi.cwiseMax(v);
   const double tie = 1e-12 * std::pow((hi - lo).norm(), 4);
@@ -87,6 +88,7 @@ void DelaunayFlips(const Positions<double>& vertices, const std::vector<int>& gr
         return -1;
       };
       const int w = third(left), x = third(right);
+      if (w < 0 || x < 0 || w == x) continue;  // a degenerate triangle (repeated corner) cannot flip
       auto project = [&](int vertex) {
         const Vec3d& q = vertices[vertex];
         return Eigen::Vector2d(q[(axis[left] + 1) % 3], q[(axis[left] + 2) % 3]);

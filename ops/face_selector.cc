@@ -16,8 +16,12 @@ def select_faces(bm, normals, min_dot, lo, hi, centers, indices, expect):
         def inside(f):
             c = f.calc_center_median()
             return all((lo[k] is None or c[k] >= lo[k]) and (hi[k] is None or c[k] <= hi[k]) for k in range(3))
+        def well_shaped(f):
+            span = max((a.co - b.co).length_squared for a in f.verts for b in f.verts)
+            return 2 * f.calc_area() > kMinFaceShape * span
         found = [f for f in bm.faces
-                 if (not normals or any(f.normal.dot(Vector(n).normalized()) >= min_dot for n in normals))
+                 if well_shaped(f)
+                 and (not normals or any(f.normal.dot(Vector(n).normalized()) >= min_dot for n in normals))
                  and inside(f)]
         if centers:
             picked = []
@@ -71,7 +75,16 @@ std::vector<int> FaceSelector::Resolve(const Mesh& mesh) const {
     }
   } else {
     for (int f = 0; f < mesh.NumFaces(); ++f) {
-      const Vec3d normal = FaceAreaNormal(mesh.vertices, mesh.faces[f]).normalized();
+      // A sliver (a side of a near-zero-height extrusion, a folded quad) has an ill-conditioned
+      // normal: in Blender's float32 coordinates it is noise, so it is never selected.
+      const Polygon& face = mesh.faces[f];
+      double span = 0;
+      for (int a : face) {
+        for (int b : face) span = std::max(span, (mesh.vertices[a] - mesh.vertices[b]).squaredNorm());
+      }
+      const Vec3d area_normal = FaceAreaNormal(mesh.vertices, face);  // length: twice the area
+      if (!(area_normal.norm() > kMinFaceShape * span)) continue;
+      const Vec3d normal = area_normal.normalized();
       const Vec3d c = FaceCentroid(mesh.vertices, mesh.faces[f]);
       bool ok = normals_.empty();
       for (const Vec3d& n : normals_) ok = ok || normal.dot(n.normalized()) >= min_dot_;

@@ -6,6 +6,7 @@
 //              centre is nearest each point;
 //   "expect": n: the required count (a changed count is an error, not a wrong edit);
 //   "indices": [...]: explicit face indices (for generated sequences).
+// Slivers are skipped by the geometric tests (kMinFaceShape).
 // Blender: the same rule in Python (kFaceSelectorPython), run on Blender's own mesh.
 #pragma once
 
@@ -40,6 +41,13 @@ class FaceSelector {
   int expect_ = -1;
 };
 
+// Slivers are never selected by the geometric tests (explicit indices still select them): a
+// face is selectable when twice its area exceeds this fraction of its largest vertex distance
+// squared (1 for a square, 0.2 for a 10:1 rectangle). Below it the normal is ill-conditioned:
+// Blender's float32 coordinates turn it into noise of up to 1e-4, which moves an extrusion.
+constexpr double kMinFaceShape = 0.05;
+
+// Python for select_faces(...); expects kMinFaceShape defined before it (ops/sequence.cc).
 extern const char* kFaceSelectorPython;
 
 }  // namespace opgraph

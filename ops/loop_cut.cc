@@ -44,15 +44,27 @@ void LoopCutOp::Prepare(const Mesh& input) {
     const double length = d.norm();
     return length > 0 && std::abs(d[axis_]) >= 0.95 * length;
   };
-  int seed = -1;
+  // Ties (a `near` point midway between two rings) are broken by position, not by edge order,
+  // which differs in Blender: within `tie`, the midpoint with the smallest x, then y, then z.
+  Vec3d lo = Vec3d::Constant(std::numeric_limits<double>::max()), hi = -lo;
+  for (const Vec3d& p : v) lo = lo.cwiseMin(p), hi = hi.cwiseMax(p);
+  const double tie = kLoopCutTie * (hi - lo).norm();
+  auto midpoint = [&](int e) -> Vec3d { return 0.5 * (v[edges[e].first] + v[edges[e].second]); };
   double best = std::numeric_limits<double>::infinity();
   for (int e = 0; e < static_cast<int>(edges.size()); ++e) {
-    if (!parallel(e)) continue;
-    const double distance = (0.5 * (v[edges[e].first] + v[edges[e].second]) - near_).norm();
-    if (distance < best) {
-      best = distance;
-      seed = e;
+    if (parallel(e)) best = std::min(best, (midpoint(e) - near_).norm());
+  }
+  auto before = [&](const Vec3d& a, const Vec3d& b) {
+    for (int k = 0; k < 3; ++k) {
+      if (a[k] < b[k] - tie) return true;
+      if (a[k] > b[k] + tie) return false;
     }
+    return false;
+  };
+  int seed = -1;
+  for (int e = 0; e < static_cast<int>(edges.size()); ++e) {
+    if (!parallel(e) || (midpoint(e) - near_).norm() > best + tie) continue;
+    if (seed < 0 || before(midpoint(e), midpoint(seed))) seed = e;
   }
   if (seed < 0) throw FieldError("near", "no edge parallel to the axis " + kAxes[axis_]);
 
@@ -150,14 +162,30 @@ Json LoopCutOp::ParamsToJson() const {
 std::string LoopCutOp::BlenderCode() const {
   Vec3d axis = Vec3d::Zero();
   axis[axis_] = 1;
-  return std::string(R"PY(def opgraph_edge_ring(bm, axis, near):
+  return "kLoopCutTie = " + Py(kLoopCutTie) + "\n" + std::string(R"PY(def opgraph_edge_ring(bm, axis, near):
     def parallel(e):
         d = e.verts[1].co - e.verts[0].co
         return d.length > 0 and abs(d.dot(axis)) >= 0.95 * d.length
     candidates = [e for e in bm.edges if parallel(e)]
     if not candidates:
         raise RuntimeError('LoopCut: no edge parallel to the axis')
-    seed = min(candidates, key=lambda e: ((e.verts[0].co + e.verts[1].co) * 0.5 - near).length)
+    def mid(e):
+        return (e.verts[0].co + e.verts[1].co) * 0.5
+    lo = Vector([min(v.co[k] for v in bm.verts) for k in range(3)])
+    hi = Vector([max(v.co[k] for v in bm.verts) for k in range(3)])
+    tie = kLoopCutTie * (hi - lo).length
+    best = min((mid(e) - near).length for e in candidates)
+    def before(a, b):
+        for k in range(3):
+            if a[k] < b[k] - tie:
+                return True
+            if a[k] > b[k] + tie:
+                return False
+        return False
+    seed = None
+    for e in candidates:
+        if (mid(e) - near).length <= best + tie and (seed is None or before(mid(e), mid(seed))):
+            seed = e
     ring = [seed]
     seen = {seed}
     queue = [seed]

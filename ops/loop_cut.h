@@ -2,7 +2,8 @@
 // build it: bmesh.ops.subdivide_edges(cuts, use_grid_fill=True) on an edge ring.
 //
 // Semantics: an edge is axis-parallel when |d . axis| >= 0.95 |d| (d its direction). The seed is
-// the axis-parallel edge whose midpoint is nearest to `near` (first in edge order on ties). The
+// the axis-parallel edge whose midpoint is nearest to `near`; on ties (within kLoopCutTie of the
+// bounding-box diagonal) the one whose midpoint has the smallest x, then y, then z. The
 // ring grows from the seed by walking across quads (BFS): in each quad adjacent to a ring edge,
 // the opposite edge joins the ring if it is axis-parallel; non-quad faces stop the walk. Every
 // ring edge is split into cuts + 1 equal parts; each quad with two opposite ring edges becomes
@@ -24,6 +25,10 @@
 #include "ops/op.h"
 
 namespace opgraph {
+
+// Relative tolerance (of the bounding-box diagonal) within which two seed edges tie; well above
+// the rounding of Blender's float32 coordinates.
+constexpr double kLoopCutTie = 1e-5;
 
 class LoopCutOp : public OpBase<LoopCutOp> {
  public:

@@ -185,7 +185,7 @@ if len(argv) != 1:
 
 std::string BlenderScript(const Sequence& sequence) {
   std::ostringstream script;
-  script << kBlenderPreamble << kVertexSelectorPython << kFaceSelectorPython << "\nobj = new_object(" << Py(sequence.start_size) << ")\n";
+  script << kBlenderPreamble << kVertexSelectorPython << "\nkMinFaceShape = " << Py(kMinFaceShape) << "\n" << kFaceSelectorPython << "\nobj = new_object(" << Py(sequence.start_size) << ")\n";
   for (size_t i = 0; i < sequence.ops.size(); ++i) {
     const Op& op = *sequence.ops[i];
     script << "\n# " << i << ": " << op.Name() << "\n";
