@@ -35,6 +35,11 @@ std::string FitterOptions::Check() const {
   for (const ParameterRangeRule& rule : domain_rules) {
     if (!(rule.weight >= 0) || !(rule.lower <= rule.upper)) return "domain rule: need weight >= 0 and lower <= upper";
   }
+  for (const BranchChoice& branch : branches) {
+    if (branch.op < 0 || branch.field.empty() || branch.options.size() < 2) {
+      return "branch choice: need op >= 0, a field and >= 2 options";
+    }
+  }
   return "";
 }
 
@@ -81,7 +86,7 @@ Fitter::Fitter(const Target& target, Sequence* sequence, const FitterOptions& op
   const std::string problem = options.Check();
   if (!problem.empty()) throw std::invalid_argument("fitter options: " + problem);
   free_gates_ = options.fit_gates;
-  program_ = std::make_unique<Program>(sequence, free_gates_);
+  program_ = std::make_unique<Program>(sequence, free_gates_, options.branches);
   trust_region_radius_ = options.initial_trust_region_radius;
 }
 
@@ -152,7 +157,7 @@ void BuildObjective(const Program& program, const FitterOptions& options, double
   }
   for (const ParameterRangeRule& rule : options.domain_rules) {
     for (const ProgramBlock& block : program.blocks()) {
-      if (!block.is_gate && block.op == rule.op && rule.param >= 0 && rule.param < block.size) {
+      if (!block.is_gate && !block.is_branch && block.op == rule.op && rule.param >= 0 && rule.param < block.size) {
         objective->terms.push_back({std::make_unique<ParameterRangeCost>(rule, block.size), nullptr, {block.data}, {}});
       }
     }
@@ -230,7 +235,7 @@ void Fitter::AddToProblem(const Objective& objective, ceres::Problem* problem) c
     } else if (!block.constant.empty()) {
       problem->SetManifold(block.data, new ceres::SubsetManifold(block.size, block.constant));
     }
-    if (!block.is_gate) {
+    if (!block.is_gate && !block.is_branch) {
       const std::vector<ParamSpec>& specs = sequence_->ops[block.op]->specs();
       for (int i = 0; i < block.size; ++i) {
         problem->SetParameterLowerBound(block.data, i, specs[i].lower);
@@ -316,7 +321,7 @@ double Fitter::Solve(const Correspondences& correspondences, double sparsity_wei
       free[block.column + i] = std::count(block.constant.begin(), block.constant.end(), i) == 0 &&
                                !(block.is_gate ? hold_gates_ : hold_params_);
       address[block.column + i] = block.data + i;
-      if (!block.is_gate) {
+      if (!block.is_gate && !block.is_branch) {
         lower[block.column + i] = sequence_->ops[block.op]->specs()[i].lower;
         upper[block.column + i] = sequence_->ops[block.op]->specs()[i].upper;
       }
@@ -362,6 +367,8 @@ Fitter::Reproduction Fitter::CheckReproduction() const {
 }
 
 bool Fitter::ResolveTopology() {
+  // A blend of branches is no written sequence; its topology is fixed until CommitBranches.
+  if (program_->num_branches() > 0) return true;
   const Reproduction reproduction = CheckReproduction();
   if (reproduction != Reproduction::kDifferent) return reproduction == Reproduction::kSame;
   // The copy evaluated with these parameters and gates, so the sequence itself will too.
@@ -391,7 +398,7 @@ double Fitter::RunStage(double sparsity_weight, FitSummary* summary) {
   };
   // Start inside the bounds (Ceres needs a feasible start).
   for (const ProgramBlock& b : program_->blocks()) {
-    if (b.is_gate) continue;
+    if (b.is_gate || b.is_branch) continue;
     const std::vector<ParamSpec>& specs = sequence_->ops[b.op]->specs();
     for (int i = 0; i < b.size; ++i) b.data[i] = std::min(specs[i].upper, std::max(specs[i].lower, b.data[i]));
   }
@@ -453,6 +460,24 @@ double Fitter::RunStage(double sparsity_weight, FitSummary* summary) {
   return best;
 }
 
+bool Fitter::CommitBranches(FitSummary* summary) {
+  if (program_->num_branches() == 0) return false;
+  for (int b = 0; b < program_->num_branches(); ++b) {
+    const std::vector<double> weights = program_->BranchWeights(b);
+    summary->branch_weights.push_back(weights);
+    summary->branch_choices.push_back(static_cast<int>(std::max_element(weights.begin(), weights.end()) - weights.begin()));
+  }
+  const std::vector<double> logits = program_->logits();
+  program_->CommitBranches();
+  retired_jacobian_evaluations_ += program_->num_jacobian_evaluations();
+  program_ = std::make_unique<Program>(sequence_, free_gates_);
+  program_->set_logits(logits);  // exact gates (the constructor clamps them)
+  if (options_.progress) {
+    *options_.progress << "fit: committed " << summary->branch_choices.size() << " branch choice(s); polishing\n";
+  }
+  return true;
+}
+
 void Fitter::Finalise(FitSummary* summary) {
   program_->StoreGates();
   summary->gates_before_finalisation = sequence_->gates;
@@ -509,6 +534,7 @@ FitSummary Fitter::Fit() {
     // under the penalty would shrink every gate and inflate the parameters to compensate).
     hold_gates_ = true;
     RunStage(0.0, &summary);
+    if (CommitBranches(&summary)) RunStage(0.0, &summary);
     hold_gates_ = false;
     hold_params_ = true;
     RunStage(options_.gate_sparsity_weight, &summary);
@@ -516,6 +542,7 @@ FitSummary Fitter::Fit() {
     Finalise(&summary);
   } else {
     RunStage(0.0, &summary);
+    if (CommitBranches(&summary)) RunStage(0.0, &summary);
     program_->StoreGates();
   }
   sparsity_weight_ = 0;
