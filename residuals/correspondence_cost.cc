@@ -16,7 +16,7 @@ bool CorrespondenceCost::Evaluate(double const* const*, double* residuals, doubl
   if (!program_->valid()) return false;
   const SurfaceCorrespondence& c = correspondence_;
   const Positions<double>& positions = program_->positions();
-  Vec3d p = Vec3d::Zero();
+  Vec3d p = c.offset;
   for (int k = 0; k < 3; ++k) p += c.weights[k] * positions[c.vertices[k]];
   const Vec3d difference = p - c.target_point;
   const bool to_plane = metric_ == ChamferMetric::kPointToPlane;
@@ -46,6 +46,34 @@ bool CorrespondenceCost::Evaluate(double const* const*, double* residuals, doubl
       }
     }
   }
+  return true;
+}
+
+BooleanWeightedCost::BooleanWeightedCost(const Program* program, const SurfaceCorrespondence& correspondence,
+                                         ChamferMetric metric, double weight, int beta_block, bool boolean_side)
+    : unweighted_(program, correspondence, metric, weight), beta_block_(beta_block), boolean_side_(boolean_side) {
+  set_num_residuals(unweighted_.num_residuals());
+  *mutable_parameter_block_sizes() = unweighted_.parameter_block_sizes();
+}
+
+bool BooleanWeightedCost::Evaluate(double const* const* parameters, double* residuals, double** jacobians) const {
+  if (!unweighted_.Evaluate(parameters, residuals, jacobians)) return false;
+  const double beta = 1.0 / (1.0 + std::exp(-parameters[beta_block_][0]));
+  // s and ds/dlogit (dbeta/dlogit = beta (1 - beta)).
+  const double s = boolean_side_ ? std::sqrt(beta) : std::sqrt(1 - beta);
+  const double slope = boolean_side_ ? 0.5 * s * (1 - beta) : -0.5 * beta * s;
+  const int m = num_residuals();
+  if (jacobians) {
+    const std::vector<int32_t>& sizes = parameter_block_sizes();
+    for (size_t b = 0; b < sizes.size(); ++b) {
+      if (jacobians[b] == nullptr) continue;
+      for (int i = 0; i < m * sizes[b]; ++i) jacobians[b][i] *= s;
+    }
+    if (jacobians[beta_block_]) {
+      for (int i = 0; i < m; ++i) jacobians[beta_block_][i] = slope * residuals[i];
+    }
+  }
+  for (int i = 0; i < m; ++i) residuals[i] *= s;
   return true;
 }
 

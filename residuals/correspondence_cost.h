@@ -20,6 +20,7 @@ struct SurfaceCorrespondence {
   double weights[3];   // barycentric weights of p
   Vec3d target_point;  // q
   Vec3d target_normal; // n (unit)
+  Vec3d offset = Vec3d::Zero();  // added to p: a point of a virtual surface (solver/boolean_weight.h)
 };
 
 enum class ChamferMetric { kPointToPoint, kPointToPlane };
@@ -36,6 +37,22 @@ class CorrespondenceCost : public ceres::CostFunction {
   SurfaceCorrespondence correspondence_;
   ChamferMetric metric_;
   double weight_;
+};
+
+// A correspondence residual scaled by s = sqrt(1 - beta) (`boolean_side` false: the
+// extrusion's terms) or s = sqrt(beta) (true: the Boolean's), beta = sigmoid(logit) of the
+// program block `beta_block`: r = s r_c, so the cost s^2 |r_c|^2 mixes the two surfaces'
+// squared distances (solver/boolean_weight.h).
+class BooleanWeightedCost : public ceres::CostFunction {
+ public:
+  BooleanWeightedCost(const Program* program, const SurfaceCorrespondence& correspondence, ChamferMetric metric,
+                      double weight, int beta_block, bool boolean_side);
+  bool Evaluate(double const* const* parameters, double* residuals, double** jacobians) const override;
+
+ private:
+  CorrespondenceCost unweighted_;
+  int beta_block_;
+  bool boolean_side_;
 };
 
 // Gate sparsity: r = sqrt(*weight) sigmoid(w) on a gate logit w, so the cost is weight g^2 / 2.

@@ -14,6 +14,8 @@
 #include <stdexcept>
 
 #include "core/nearest.h"
+#include "ops/extrude.h"
+#include "solver/boolean_weight.h"
 
 namespace opgraph {
 
@@ -34,6 +36,9 @@ std::string FitterOptions::Check() const {
   if (num_threads < 1) return "num_threads must be >= 1";
   for (const ParameterRangeRule& rule : domain_rules) {
     if (!(rule.weight >= 0) || !(rule.lower <= rule.upper)) return "domain rule: need weight >= 0 and lower <= upper";
+  }
+  for (int op : boolean_weight_ops) {
+    if (op < 0) return "boolean_weight_ops: op indices must be >= 0";
   }
   for (const BranchChoice& branch : branches) {
     if (branch.op < 0 || branch.field.empty() || branch.options.size() < 2) {
@@ -61,11 +66,21 @@ std::unique_ptr<ceres::LossFunction> MakeLoss(RobustLoss kind, double scale) {
   return nullptr;
 }
 
+// The Boolean weight's terms (solver/boolean_weight.h), when the last op has one: beta's
+// block, whether each output-to-target sample lies on the extrusion's faces, and each target
+// point's correspondence on the Boolean surface.
+struct BooleanWeightTerms {
+  int beta_block = -1;
+  std::vector<char> on_extrusion;
+  std::vector<SurfaceCorrespondence> boolean_to_target, target_to_boolean;
+};
+
 }  // namespace
 
 struct Fitter::Correspondences {
   std::vector<SurfaceCorrespondence> output_to_target, target_to_output;
   double output_to_target_weight = 0, target_to_output_weight = 0;  // residual multipliers
+  BooleanWeightTerms boolean;
 };
 
 // The objective at fixed correspondences: residual blocks that both optimizers and the loss
@@ -86,7 +101,8 @@ Fitter::Fitter(const Target& target, Sequence* sequence, const FitterOptions& op
   const std::string problem = options.Check();
   if (!problem.empty()) throw std::invalid_argument("fitter options: " + problem);
   free_gates_ = options.fit_gates;
-  program_ = std::make_unique<Program>(sequence, free_gates_, options.branches);
+  boolean_weight_ops_ = options.boolean_weight_ops;
+  program_ = std::make_unique<Program>(sequence, free_gates_, options.branches, boolean_weight_ops_);
   trust_region_radius_ = options.initial_trust_region_radius;
 }
 
@@ -98,7 +114,42 @@ void Fitter::BuildCorrespondences(uint64_t seed, Correspondences* out) {
   const std::vector<MeshTriangle> triangles = FanTriangulate(program_->faces());
   out->output_to_target.clear();
   out->target_to_output.clear();
+  out->boolean = BooleanWeightTerms();
+  const int last_op = static_cast<int>(sequence_->ops.size()) - 1;
+  out->boolean.beta_block = last_op >= 0 ? program_->BooleanWeightBlock(last_op) : -1;
+  const int first_extruded = out->boolean.beta_block >= 0
+                                 ? static_cast<const ExtrudeOp&>(*sequence_->ops[last_op]).first_created_face()
+                                 : std::numeric_limits<int>::max();
   const double scale = target_.scale();
+  const VirtualSurface boolean_surface =
+      out->boolean.beta_block >= 0 ? BooleanSurface(*program_, last_op) : VirtualSurface();
+  if (options_.output_to_target_weight > 0 && out->boolean.beta_block >= 0) {
+    // B's own faces, sampled at the output's density (solver/boolean_weight.h).
+    std::vector<MeshTriangle> own;
+    for (const MeshTriangle& t : boolean_surface.triangles) {
+      if (t.face >= boolean_surface.first_own_face) own.push_back(t);
+    }
+    auto area = [](const Positions<double>& p, const std::vector<MeshTriangle>& list) {
+      double sum = 0;
+      for (const MeshTriangle& t : list) sum += 0.5 * (p[t.v[1]] - p[t.v[0]]).cross(p[t.v[2]] - p[t.v[0]]).norm();
+      return sum;
+    };
+    const double output_area = area(positions, triangles);
+    const int count = output_area > 0 ? static_cast<int>(std::lround(options_.num_output_samples *
+                                                                      area(boolean_surface.positions, own) / output_area))
+                                      : 0;
+    const SurfaceSamples samples = SampleSurface(boolean_surface.positions, own, count, seed + 1);
+    std::vector<int> own_index;  // own triangle -> index in boolean_surface.triangles
+    for (size_t t = 0; t < boolean_surface.triangles.size(); ++t) {
+      if (boolean_surface.triangles[t].face >= boolean_surface.first_own_face) own_index.push_back(static_cast<int>(t));
+    }
+    for (size_t i = 0; i < samples.points.size(); ++i) {
+      const int nearest = target_.tree().Nearest(samples.points[i], nullptr);
+      out->boolean.boolean_to_target.push_back(CorrespondenceOnSurface(boolean_surface, own_index[samples.triangles[i]],
+                                                                       samples.barycentrics[i], target_.points()[nearest],
+                                                                       target_.normals()[nearest]));
+    }
+  }
   if (options_.output_to_target_weight > 0) {
     const SurfaceSamples samples = SampleSurface(positions, triangles, options_.num_output_samples, seed);
     for (size_t i = 0; i < samples.points.size(); ++i) {
@@ -109,6 +160,7 @@ void Fitter::BuildCorrespondences(uint64_t seed, Correspondences* out) {
       c.target_point = target_.points()[nearest];
       c.target_normal = target_.normals()[nearest];
       out->output_to_target.push_back(c);
+      out->boolean.on_extrusion.push_back(t.face >= first_extruded);
     }
     out->output_to_target_weight =
         scale * std::sqrt(options_.output_to_target_weight / std::max<size_t>(1, out->output_to_target.size()));
@@ -116,7 +168,19 @@ void Fitter::BuildCorrespondences(uint64_t seed, Correspondences* out) {
   const int num_target = std::min<int>(options_.num_target_samples, static_cast<int>(target_.points().size()));
   if (options_.target_to_output_weight > 0 && num_target > 0) {
     const TriangleTree tree(positions, triangles);
+    std::unique_ptr<TriangleTree> boolean_tree;
+    if (out->boolean.beta_block >= 0) {
+      boolean_tree = std::make_unique<TriangleTree>(boolean_surface.positions, boolean_surface.triangles);
+    }
     for (int i = 0; i < num_target; ++i) {
+      if (out->boolean.beta_block >= 0) {
+        const ClosestPoint on_boolean = boolean_tree->Closest(target_.points()[i]);
+        if (on_boolean.triangle >= 0) {
+          out->boolean.target_to_boolean.push_back(
+              CorrespondenceOnSurface(boolean_surface, on_boolean.triangle, on_boolean.barycentric, target_.points()[i],
+                                      target_.normals()[i]));
+        }
+      }
       const ClosestPoint closest = tree.Closest(target_.points()[i]);
       if (closest.triangle < 0) continue;
       SurfaceCorrespondence c;
@@ -136,20 +200,36 @@ namespace {
 void BuildObjective(const Program& program, const FitterOptions& options, double unit_scale,
                     const std::vector<SurfaceCorrespondence>& forward, double forward_weight,
                     const std::vector<SurfaceCorrespondence>& backward, double backward_weight,
-                    const double* sparsity_weight, Objective* objective) {
+                    const BooleanWeightTerms& boolean, const double* sparsity_weight, Objective* objective) {
   const std::vector<double*> all_blocks = program.BlockPointers();
-  auto add_terms = [&](const std::vector<SurfaceCorrespondence>& list, double weight) {
+  // Which residuals the Boolean weight scales (solver/boolean_weight.h): `on_extrusion` selects
+  // (when given) the ones scaled by sqrt(1 - beta); the Boolean side's by sqrt(beta).
+  enum class Scale { kNone, kExtrusion, kBoolean };
+  auto add_terms = [&](const std::vector<SurfaceCorrespondence>& list, double weight, const std::vector<char>* on_extrusion,
+                       Scale scale) {
     // The robust loss acts on the residual weight * (p - q) = sqrt(w / N) * (distance in the
     // unit box), so its scale (unit-box units) is multiplied by sqrt(w / N) = weight / unit_scale.
     objective->losses.push_back(MakeLoss(options.loss, options.loss_scale * weight / unit_scale));
     const ceres::LossFunction* loss = objective->losses.back().get();
-    for (const SurfaceCorrespondence& c : list) {
-      objective->terms.push_back(
-          {std::make_unique<CorrespondenceCost>(&program, c, options.metric, weight), loss, all_blocks, {}});
+    for (size_t i = 0; i < list.size(); ++i) {
+      const Scale s = on_extrusion && !(*on_extrusion)[i] ? Scale::kNone : scale;
+      std::unique_ptr<ceres::CostFunction> cost;
+      if (s == Scale::kNone) {
+        cost = std::make_unique<CorrespondenceCost>(&program, list[i], options.metric, weight);
+      } else {
+        cost = std::make_unique<BooleanWeightedCost>(&program, list[i], options.metric, weight, boolean.beta_block,
+                                                     s == Scale::kBoolean);
+      }
+      objective->terms.push_back({std::move(cost), loss, all_blocks, {}});
     }
   };
-  add_terms(forward, forward_weight);
-  add_terms(backward, backward_weight);
+  const bool weighted = boolean.beta_block >= 0;
+  add_terms(forward, forward_weight, weighted ? &boolean.on_extrusion : nullptr, weighted ? Scale::kExtrusion : Scale::kNone);
+  add_terms(backward, backward_weight, nullptr, weighted ? Scale::kExtrusion : Scale::kNone);
+  if (weighted) {
+    add_terms(boolean.boolean_to_target, forward_weight, nullptr, Scale::kBoolean);
+    add_terms(boolean.target_to_boolean, backward_weight, nullptr, Scale::kBoolean);
+  }
   for (const ProgramBlock& block : program.blocks()) {
     if (block.is_gate) {
       objective->terms.push_back({std::make_unique<GateSparsityCost>(sparsity_weight), nullptr, {block.data}, {}});
@@ -157,7 +237,7 @@ void BuildObjective(const Program& program, const FitterOptions& options, double
   }
   for (const ParameterRangeRule& rule : options.domain_rules) {
     for (const ProgramBlock& block : program.blocks()) {
-      if (!block.is_gate && !block.is_branch && block.op == rule.op && rule.param >= 0 && rule.param < block.size) {
+      if (block.holds_op_params() && block.op == rule.op && rule.param >= 0 && rule.param < block.size) {
         objective->terms.push_back({std::make_unique<ParameterRangeCost>(rule, block.size), nullptr, {block.data}, {}});
       }
     }
@@ -221,7 +301,7 @@ double Fitter::CurrentLoss() {
   Objective objective;
   BuildObjective(*program_, options_, target_.scale(), correspondences.output_to_target,
                  correspondences.output_to_target_weight, correspondences.target_to_output,
-                 correspondences.target_to_output_weight, &sparsity_weight_, &objective);
+                 correspondences.target_to_output_weight, correspondences.boolean, &sparsity_weight_, &objective);
   program_->PrepareForEvaluation(false, true);
   std::vector<double> r, j;
   return EvaluateObjective(*program_, objective, nullptr, &r, &j);
@@ -235,7 +315,7 @@ void Fitter::AddToProblem(const Objective& objective, ceres::Problem* problem) c
     } else if (!block.constant.empty()) {
       problem->SetManifold(block.data, new ceres::SubsetManifold(block.size, block.constant));
     }
-    if (!block.is_gate && !block.is_branch) {
+    if (block.holds_op_params()) {
       const std::vector<ParamSpec>& specs = sequence_->ops[block.op]->specs();
       for (int i = 0; i < block.size; ++i) {
         problem->SetParameterLowerBound(block.data, i, specs[i].lower);
@@ -255,7 +335,7 @@ void Fitter::EvaluateBothWays(double* own_loss, std::vector<double>* own_gradien
   Objective objective;
   BuildObjective(*program_, options_, target_.scale(), correspondences.output_to_target,
                  correspondences.output_to_target_weight, correspondences.target_to_output,
-                 correspondences.target_to_output_weight, &sparsity_weight_, &objective);
+                 correspondences.target_to_output_weight, correspondences.boolean, &sparsity_weight_, &objective);
   program_->PrepareForEvaluation(true, true);
   std::vector<double> r, j;
   *own_loss = EvaluateObjective(*program_, objective, own_gradient, &r, &j);
@@ -276,7 +356,7 @@ double Fitter::Solve(const Correspondences& correspondences, double sparsity_wei
   Objective objective;
   BuildObjective(*program_, options_, target_.scale(), correspondences.output_to_target,
                  correspondences.output_to_target_weight, correspondences.target_to_output,
-                 correspondences.target_to_output_weight, &sparsity_weight_, &objective);
+                 correspondences.target_to_output_weight, correspondences.boolean, &sparsity_weight_, &objective);
   const std::vector<ProgramBlock>& blocks = program_->blocks();
 
   if (options_.optimizer == Optimizer::kCeres) {
@@ -321,7 +401,7 @@ double Fitter::Solve(const Correspondences& correspondences, double sparsity_wei
       free[block.column + i] = std::count(block.constant.begin(), block.constant.end(), i) == 0 &&
                                !(block.is_gate ? hold_gates_ : hold_params_);
       address[block.column + i] = block.data + i;
-      if (!block.is_gate && !block.is_branch) {
+      if (block.holds_op_params()) {
         lower[block.column + i] = sequence_->ops[block.op]->specs()[i].lower;
         upper[block.column + i] = sequence_->ops[block.op]->specs()[i].upper;
       }
@@ -375,8 +455,10 @@ bool Fitter::ResolveTopology() {
   const std::vector<double> logits = program_->logits();
   program_->StoreGates();
   retired_jacobian_evaluations_ += program_->num_jacobian_evaluations();
-  program_ = std::make_unique<Program>(sequence_, free_gates_);
+  const std::vector<double> boolean_logits = program_->boolean_logits();
+  program_ = std::make_unique<Program>(sequence_, free_gates_, std::vector<BranchChoice>(), boolean_weight_ops_);
   program_->set_logits(logits);  // exact gates (the constructor clamps them)
+  program_->set_boolean_logits(boolean_logits);
   program_->PrepareForEvaluation(false, true);
   return true;
 }
@@ -398,7 +480,7 @@ double Fitter::RunStage(double sparsity_weight, FitSummary* summary) {
   };
   // Start inside the bounds (Ceres needs a feasible start).
   for (const ProgramBlock& b : program_->blocks()) {
-    if (b.is_gate || b.is_branch) continue;
+    if (!b.holds_op_params()) continue;
     const std::vector<ParamSpec>& specs = sequence_->ops[b.op]->specs();
     for (int i = 0; i < b.size; ++i) b.data[i] = std::min(specs[i].upper, std::max(specs[i].lower, b.data[i]));
   }
@@ -416,7 +498,7 @@ double Fitter::RunStage(double sparsity_weight, FitSummary* summary) {
     Objective objective;
     BuildObjective(*program_, options_, target_.scale(), correspondences.output_to_target,
                    correspondences.output_to_target_weight, correspondences.target_to_output,
-                   correspondences.target_to_output_weight, &sparsity_weight_, &objective);
+                   correspondences.target_to_output_weight, correspondences.boolean, &sparsity_weight_, &objective);
     program_->PrepareForEvaluation(false, true);
     std::vector<double> r, j;
     const double fresh = EvaluateObjective(*program_, objective, nullptr, &r, &j);
@@ -468,10 +550,12 @@ bool Fitter::CommitBranches(FitSummary* summary) {
     summary->branch_choices.push_back(static_cast<int>(std::max_element(weights.begin(), weights.end()) - weights.begin()));
   }
   const std::vector<double> logits = program_->logits();
+  const std::vector<double> boolean_logits = program_->boolean_logits();
   program_->CommitBranches();
   retired_jacobian_evaluations_ += program_->num_jacobian_evaluations();
-  program_ = std::make_unique<Program>(sequence_, free_gates_);
+  program_ = std::make_unique<Program>(sequence_, free_gates_, std::vector<BranchChoice>(), boolean_weight_ops_);
   program_->set_logits(logits);  // exact gates (the constructor clamps them)
+  program_->set_boolean_logits(boolean_logits);
   if (options_.progress) {
     *options_.progress << "fit: committed " << summary->branch_choices.size() << " branch choice(s); polishing\n";
   }
@@ -539,10 +623,13 @@ FitSummary Fitter::Fit() {
     hold_params_ = true;
     RunStage(options_.gate_sparsity_weight, &summary);
     hold_params_ = false;
+    for (int op : boolean_weight_ops_) summary.boolean_weights.push_back(program_->BooleanWeight(op));
+    boolean_weight_ops_.clear();
     Finalise(&summary);
   } else {
     RunStage(0.0, &summary);
     if (CommitBranches(&summary)) RunStage(0.0, &summary);
+    for (int op : boolean_weight_ops_) summary.boolean_weights.push_back(program_->BooleanWeight(op));
     program_->StoreGates();
   }
   sparsity_weight_ = 0;

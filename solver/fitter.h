@@ -18,6 +18,12 @@
 // the most weighted option is written into the op (CommitBranches) and the rest of the fit
 // (gate stage, finalisation, or a polishing solve) runs on the sequence as written.
 //
+// Boolean weight (options.boolean_weight_ops; solver/boolean_weight.h): the last op, an
+// Extrude, gets beta = sigmoid(logit), fitted with the parameters; its extrusion's residuals
+// are scaled by sqrt(1 - beta) and each target point's term mixes its distances to the
+// extruded and to the Boolean surface. FitSummary::boolean_weights reports beta; the Extrude
+// stays in the sequence (ExtrudeToBoolean converts it, for a controller to apply once).
+//
 // Discrete choices are made by the topology passes at the start parameters and re-made at each
 // correspondence update when the parameters have moved them (a Boolean's intersection, the
 // elements a geometric target selects); the result is the best parameter set at which the
@@ -66,6 +72,8 @@ struct FitterOptions {
   std::vector<ParameterRangeRule> domain_rules;
   // Discrete choices fitted by softmax branch weights (equal topology only; program.h).
   std::vector<BranchChoice> branches;
+  // Extrude ops given the Boolean weight beta (only the last op; solver/boolean_weight.h).
+  std::vector<int> boolean_weight_ops;
   std::ostream* progress = nullptr;  // one line per solve when set
   // Empty when valid, else the problem.
   std::string Check() const;
@@ -84,6 +92,8 @@ struct FitSummary {
   // chosen (their argmax).
   std::vector<std::vector<double>> branch_weights;
   std::vector<int> branch_choices;
+  // Per boolean_weight_ops entry: beta after the parameter stage.
+  std::vector<double> boolean_weights;
   // The loss with fresh correspondences (a function of the parameters only, so comparable
   // across optimizers) at each correspondence update and at the end.
   struct Point {
@@ -147,6 +157,7 @@ class Fitter {
   double trust_region_radius_ = 0;
   bool hold_params_ = false, hold_gates_ = false;
   bool free_gates_ = false;
+  std::vector<int> boolean_weight_ops_;  // cleared when the gate finalisation renumbers ops
   int retired_jacobian_evaluations_ = 0;  // by programs replaced during the fit  // blocks held constant in the current stage
   uint64_t update_count_ = 0;
   double start_time_ = 0;

@@ -74,7 +74,8 @@ std::unique_ptr<Op> MakeVariant(const Op& op, int index, const std::string& fiel
 
 }  // namespace
 
-Program::Program(Sequence* sequence, bool free_gates, const std::vector<BranchChoice>& branches)
+Program::Program(Sequence* sequence, bool free_gates, const std::vector<BranchChoice>& branches,
+                 const std::vector<int>& boolean_weight_ops)
     : sequence_(sequence), start_(sequence->StartMesh()) {
   const std::vector<Mesh> meshes = EvaluateSequence(sequence);  // topology passes (discrete choices)
   const int num_ops = static_cast<int>(sequence->ops.size());
@@ -103,6 +104,17 @@ Program::Program(Sequence* sequence, bool free_gates, const std::vector<BranchCh
     Softmax(branch.logits, &branch.weights);
     branch_of_[choice.op] = static_cast<int>(branches_.size());
     branches_.push_back(std::move(branch));
+  }
+  boolean_block_.assign(num_ops, -1);
+  boolean_logits_.assign(num_ops, 0.0);
+  std::vector<bool> boolean_weighted(num_ops, false);
+  for (int op : boolean_weight_ops) {
+    const std::string label = "Boolean weight on op " + std::to_string(op);
+    if (op < 0 || op >= num_ops) throw std::invalid_argument(label + ": not in the sequence");
+    if (sequence->ops[op]->Name() != "Extrude") throw std::invalid_argument(label + ": not an Extrude");
+    // Its residuals need the extrusion's faces in the output (solver/boolean_weight.h).
+    if (op != num_ops - 1) throw std::invalid_argument(label + ": only the last op can have one");
+    boolean_weighted[op] = true;
   }
   param_block_.assign(num_ops, -1);
   gate_block_.assign(num_ops, -1);
@@ -137,6 +149,11 @@ Program::Program(Sequence* sequence, bool free_gates, const std::vector<BranchCh
       for (int i = 0; i < size; ++i) free_columns_.push_back({k, -1, num_columns_ + i, i});
       num_columns_ += size;
     }
+    if (boolean_weighted[k]) {  // no free column: the positions do not depend on it
+      boolean_block_[k] = static_cast<int>(blocks_.size());
+      blocks_.push_back({&boolean_logits_[k], 1, k, false, num_columns_, {}, false, true});
+      num_columns_ += 1;
+    }
   }
   jet_in_.reserve(max_vertices);
   jet_out_.reserve(max_vertices);
@@ -158,6 +175,8 @@ std::vector<int> Program::BlockSizes() const {
 double Program::Gate(int op) const {
   return gate_block_[op] >= 0 ? Sigmoid(logits_[op]) : sequence_->gates[op];
 }
+
+double Program::BooleanWeight(int op) const { return Sigmoid(boolean_logits_[op]); }
 
 std::vector<double> Program::BranchWeights(int branch) const {
   std::vector<double> weights;

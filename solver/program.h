@@ -39,6 +39,9 @@ struct ProgramBlock {
   int column;      // first Jacobian column of the block
   std::vector<int> constant;  // indices within the block held constant
   bool is_branch = false;      // a branch choice's K logits (no bounds, not a gate)
+  bool is_boolean_weight = false;  // an Extrude's Boolean weight logit (solver/boolean_weight.h)
+  // Whether the block is the op's parameters (bounded by its specs).
+  bool holds_op_params() const { return !is_gate && !is_branch && !is_boolean_weight; }
 };
 
 // A discrete choice fitted by softmax branch weights: field `field` of op `op`'s JSON params
@@ -54,9 +57,12 @@ class Program : public ceres::EvaluationCallback {
   // Runs every op's topology pass once at the sequence's current parameters. `free_gates`: the
   // gates of ops with fitted parameters become parameters (started at min(max(g, 0.02), 0.98)
   // so the sigmoid is not saturated). `branches`: at most one per op, started at uniform
-  // weights. Throws SequenceError like EvaluateSequence, std::invalid_argument (one line naming
-  // the op and field) on a branch choice that cannot be built.
-  Program(Sequence* sequence, bool free_gates, const std::vector<BranchChoice>& branches = {});
+  // weights. `boolean_weight_ops`: Extrude ops (only the last op) given a Boolean weight logit
+  // (solver/boolean_weight.h), started at 0 (beta = 0.5); the output does not depend on it.
+  // Throws SequenceError like EvaluateSequence, std::invalid_argument (one line naming the op
+  // and field) on a branch choice or Boolean weight that cannot be built.
+  Program(Sequence* sequence, bool free_gates, const std::vector<BranchChoice>& branches = {},
+          const std::vector<int>& boolean_weight_ops = {});
 
   const std::vector<ProgramBlock>& blocks() const { return blocks_; }
   int num_columns() const { return num_columns_; }
@@ -81,6 +87,17 @@ class Program : public ceres::EvaluationCallback {
   // from the op's JSON with that option, keeping its parameters), so the sequence as written
   // chooses it. The program is stale afterwards (its blocks alias the replaced ops): rebuild it.
   void CommitBranches() const;
+
+  // Boolean weights: the block index of op `op`'s logit (-1: none), beta = sigmoid(logit), and
+  // all the logits (per op) to carry them over to a rebuilt program.
+  int BooleanWeightBlock(int op) const { return boolean_block_[op]; }
+  double BooleanWeight(int op) const;
+  const std::vector<double>& boolean_logits() const { return boolean_logits_; }
+  void set_boolean_logits(const std::vector<double>& logits) { boolean_logits_ = logits; }
+
+  const Sequence& sequence() const { return *sequence_; }
+  // #V positions of op `op`'s input at the last evaluation.
+  const Positions<double>& InputPositions(int op) const { return steps_[op]; }
 
   // Evaluates at the current parameter values. Returns false when a position is not finite.
   bool EvaluateValues();
@@ -131,6 +148,8 @@ class Program : public ceres::EvaluationCallback {
   void EvaluateOp(int k, const JetT* params, const JetT& gate, const Positions<JetT>& in, Positions<JetT>* out);
   std::vector<Branch> branches_;
   std::vector<int> branch_of_;  // per op: index into branches_ or -1
+  std::vector<int> boolean_block_;       // per op: block index of its Boolean weight or -1
+  std::vector<double> boolean_logits_;   // per op
   std::vector<FreeColumn> free_columns_;  // ordered by op
 
   std::vector<Positions<double>> steps_;  // #ops + 1: the start, then each op's output
