@@ -75,12 +75,65 @@ struct BooleanWeightTerms {
   std::vector<SurfaceCorrespondence> boolean_to_target, target_to_boolean;
 };
 
+// A mixed branch's terms (solver/program.h): per option, output-to-target samples of its own
+// surface and each target point's closest point on it, every residual scaled by
+// sqrt(w_option), so the loss mixes the options' Chamfer terms.
+struct MixedBranchTerms {
+  int block = -1;
+  std::vector<SurfaceCorrespondence> forward, backward;
+  std::vector<int> forward_option, backward_option;
+  double forward_weight = 0, backward_weight = 0;  // residual multipliers (each option's own count)
+};
+
+SurfaceCorrespondence CorrespondenceOnTriangle(const MeshTriangle& triangle, const Vec3d& barycentric,
+                                               const Vec3d& target_point, const Vec3d& target_normal) {
+  SurfaceCorrespondence c;
+  for (int k = 0; k < 3; ++k) c.vertices[k] = triangle.v[k], c.weights[k] = barycentric[k];
+  c.target_point = target_point;
+  c.target_normal = target_normal;
+  return c;
+}
+
+void BuildMixedCorrespondences(const Program& program, const Target& target, const FitterOptions& options,
+                               uint64_t seed, MixedBranchTerms* out) {
+  const Positions<double>& positions = program.positions();
+  const int num_options = program.blocks()[program.MixedBranchBlock()].size;
+  std::vector<std::vector<MeshTriangle>> triangles(num_options);
+  for (const MeshTriangle& t : FanTriangulate(program.faces())) triangles[program.face_options()[t.face]].push_back(t);
+  const int num_target = std::min<int>(options.num_target_samples, static_cast<int>(target.points().size()));
+  out->block = program.MixedBranchBlock();
+  for (int k = 0; k < num_options; ++k) {
+    if (options.output_to_target_weight > 0) {
+      const SurfaceSamples samples = SampleSurface(positions, triangles[k], options.num_output_samples, seed);
+      for (size_t i = 0; i < samples.points.size(); ++i) {
+        const int nearest = target.tree().Nearest(samples.points[i], nullptr);
+        out->forward.push_back(CorrespondenceOnTriangle(triangles[k][samples.triangles[i]], samples.barycentrics[i],
+                                                        target.points()[nearest], target.normals()[nearest]));
+        out->forward_option.push_back(k);
+      }
+    }
+    if (options.target_to_output_weight > 0 && num_target > 0) {
+      const TriangleTree tree(positions, triangles[k]);
+      for (int i = 0; i < num_target; ++i) {
+        const ClosestPoint closest = tree.Closest(target.points()[i]);
+        if (closest.triangle < 0) continue;
+        out->backward.push_back(CorrespondenceOnTriangle(triangles[k][closest.triangle], closest.barycentric,
+                                                         target.points()[i], target.normals()[i]));
+        out->backward_option.push_back(k);
+      }
+    }
+  }
+  out->forward_weight = target.scale() * std::sqrt(options.output_to_target_weight / std::max(1, options.num_output_samples));
+  out->backward_weight = target.scale() * std::sqrt(options.target_to_output_weight / std::max(1, num_target));
+}
+
 }  // namespace
 
 struct Fitter::Correspondences {
   std::vector<SurfaceCorrespondence> output_to_target, target_to_output;
   double output_to_target_weight = 0, target_to_output_weight = 0;  // residual multipliers
   BooleanWeightTerms boolean;
+  MixedBranchTerms mixed;
 };
 
 // The objective at fixed correspondences: residual blocks that both optimizers and the loss
@@ -115,6 +168,11 @@ void Fitter::BuildCorrespondences(uint64_t seed, Correspondences* out) {
   out->output_to_target.clear();
   out->target_to_output.clear();
   out->boolean = BooleanWeightTerms();
+  out->mixed = MixedBranchTerms();
+  if (program_->MixedBranchBlock() >= 0) {
+    BuildMixedCorrespondences(*program_, target_, options_, seed, &out->mixed);
+    return;
+  }
   const int last_op = static_cast<int>(sequence_->ops.size()) - 1;
   out->boolean.beta_block = last_op >= 0 ? program_->BooleanWeightBlock(last_op) : -1;
   const int first_extruded = out->boolean.beta_block >= 0
@@ -200,7 +258,8 @@ namespace {
 void BuildObjective(const Program& program, const FitterOptions& options, double unit_scale,
                     const std::vector<SurfaceCorrespondence>& forward, double forward_weight,
                     const std::vector<SurfaceCorrespondence>& backward, double backward_weight,
-                    const BooleanWeightTerms& boolean, const double* sparsity_weight, Objective* objective) {
+                    const BooleanWeightTerms& boolean, const MixedBranchTerms& mixed, const double* sparsity_weight,
+                    Objective* objective) {
   const std::vector<double*> all_blocks = program.BlockPointers();
   // Which residuals the Boolean weight scales (solver/boolean_weight.h): `on_extrusion` selects
   // (when given) the ones scaled by sqrt(1 - beta); the Boolean side's by sqrt(beta).
@@ -230,6 +289,17 @@ void BuildObjective(const Program& program, const FitterOptions& options, double
     add_terms(boolean.boolean_to_target, forward_weight, nullptr, Scale::kBoolean);
     add_terms(boolean.target_to_boolean, backward_weight, nullptr, Scale::kBoolean);
   }
+  auto add_mixed_terms = [&](const std::vector<SurfaceCorrespondence>& list, const std::vector<int>& option,
+                             double weight) {
+    objective->losses.push_back(MakeLoss(options.loss, options.loss_scale * weight / unit_scale));
+    for (size_t i = 0; i < list.size(); ++i) {
+      objective->terms.push_back({std::make_unique<BranchWeightedCost>(&program, list[i], options.metric, weight,
+                                                                       mixed.block, option[i]),
+                                  objective->losses.back().get(), all_blocks, {}});
+    }
+  };
+  add_mixed_terms(mixed.forward, mixed.forward_option, mixed.forward_weight);
+  add_mixed_terms(mixed.backward, mixed.backward_option, mixed.backward_weight);
   for (const ProgramBlock& block : program.blocks()) {
     if (block.is_gate) {
       objective->terms.push_back({std::make_unique<GateSparsityCost>(sparsity_weight), nullptr, {block.data}, {}});
@@ -301,7 +371,7 @@ double Fitter::CurrentLoss() {
   Objective objective;
   BuildObjective(*program_, options_, target_.scale(), correspondences.output_to_target,
                  correspondences.output_to_target_weight, correspondences.target_to_output,
-                 correspondences.target_to_output_weight, correspondences.boolean, &sparsity_weight_, &objective);
+                 correspondences.target_to_output_weight, correspondences.boolean, correspondences.mixed, &sparsity_weight_, &objective);
   program_->PrepareForEvaluation(false, true);
   std::vector<double> r, j;
   return EvaluateObjective(*program_, objective, nullptr, &r, &j);
@@ -335,7 +405,7 @@ void Fitter::EvaluateBothWays(double* own_loss, std::vector<double>* own_gradien
   Objective objective;
   BuildObjective(*program_, options_, target_.scale(), correspondences.output_to_target,
                  correspondences.output_to_target_weight, correspondences.target_to_output,
-                 correspondences.target_to_output_weight, correspondences.boolean, &sparsity_weight_, &objective);
+                 correspondences.target_to_output_weight, correspondences.boolean, correspondences.mixed, &sparsity_weight_, &objective);
   program_->PrepareForEvaluation(true, true);
   std::vector<double> r, j;
   *own_loss = EvaluateObjective(*program_, objective, own_gradient, &r, &j);
@@ -356,7 +426,7 @@ double Fitter::Solve(const Correspondences& correspondences, double sparsity_wei
   Objective objective;
   BuildObjective(*program_, options_, target_.scale(), correspondences.output_to_target,
                  correspondences.output_to_target_weight, correspondences.target_to_output,
-                 correspondences.target_to_output_weight, correspondences.boolean, &sparsity_weight_, &objective);
+                 correspondences.target_to_output_weight, correspondences.boolean, correspondences.mixed, &sparsity_weight_, &objective);
   const std::vector<ProgramBlock>& blocks = program_->blocks();
 
   if (options_.optimizer == Optimizer::kCeres) {
@@ -498,7 +568,7 @@ double Fitter::RunStage(double sparsity_weight, FitSummary* summary) {
     Objective objective;
     BuildObjective(*program_, options_, target_.scale(), correspondences.output_to_target,
                    correspondences.output_to_target_weight, correspondences.target_to_output,
-                   correspondences.target_to_output_weight, correspondences.boolean, &sparsity_weight_, &objective);
+                   correspondences.target_to_output_weight, correspondences.boolean, correspondences.mixed, &sparsity_weight_, &objective);
     program_->PrepareForEvaluation(false, true);
     std::vector<double> r, j;
     const double fresh = EvaluateObjective(*program_, objective, nullptr, &r, &j);

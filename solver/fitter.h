@@ -70,7 +70,8 @@ struct FitterOptions {
   int num_threads = 1;
   uint64_t seed = 1;
   std::vector<ParameterRangeRule> domain_rules;
-  // Discrete choices fitted by softmax branch weights (equal topology only; program.h).
+  // Discrete choices fitted by softmax branch weights (program.h): options of equal topology
+  // blend positions; options of different topology (last op only) mix their Chamfer terms.
   std::vector<BranchChoice> branches;
   // Extrude ops given the Boolean weight beta (only the last op; solver/boolean_weight.h).
   std::vector<int> boolean_weight_ops;

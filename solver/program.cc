@@ -47,6 +47,20 @@ void Softmax(const std::vector<double>& logits, std::vector<double>* weights) {
   for (double& w : *weights) w /= sum;
 }
 
+// The variants' outputs side by side (a mixed branch).
+template <typename T>
+void ConcatenateVariants(const std::vector<std::unique_ptr<Op>>& variants, const T* params, const T& gate,
+                         const Positions<T>& in, std::vector<Positions<T>>* outputs, Positions<T>* out) {
+  size_t total = 0;
+  for (size_t i = 0; i < variants.size(); ++i) {
+    variants[i]->Evaluate(params, gate, in, &(*outputs)[i]);
+    total += (*outputs)[i].size();
+  }
+  out->resize(total);
+  auto next = out->begin();
+  for (const Positions<T>& output : *outputs) next = std::copy(output.begin(), output.end(), next);
+}
+
 // Variant `option` of `op`: the op parsed from its JSON with field := option, prepared on
 // `input`. Throws std::invalid_argument naming the op and field.
 std::unique_ptr<Op> MakeVariant(const Op& op, int index, const std::string& field, const Json& option,
@@ -64,10 +78,6 @@ std::unique_ptr<Op> MakeVariant(const Op& op, int index, const std::string& fiel
   }
   if (variant->specs().size() != op.specs().size()) {
     throw std::invalid_argument(label + ": option " + option.dump() + " changes the op's parameters");
-  }
-  if (variant->output_faces() != op.output_faces() || variant->num_output_vertices() != op.num_output_vertices()) {
-    throw std::invalid_argument(label + ": option " + option.dump() +
-                                " gives another topology (only branches of equal topology are supported)");
   }
   return variant;
 }
@@ -88,13 +98,34 @@ Program::Program(Sequence* sequence, bool free_gates, const std::vector<BranchCh
       throw std::invalid_argument("branch choice: op " + std::to_string(choice.op) + " is not in the sequence");
     }
     if (branch_of_[choice.op] >= 0) throw std::invalid_argument("branch choice: op " + std::to_string(choice.op) + " listed twice");
-    if (choice.options.size() < 2) throw std::invalid_argument("branch choice on op " + std::to_string(choice.op) + ": needs >= 2 options");
+    if (choice.options.size() < 2 || static_cast<int>(choice.options.size()) > kMaxBranchOptions) {
+      throw std::invalid_argument("branch choice on op " + std::to_string(choice.op) + ": needs 2 to " +
+                                  std::to_string(kMaxBranchOptions) + " options");
+    }
     const Op& op = *sequence->ops[choice.op];
     const Mesh input = choice.op == 0 ? start_ : meshes[choice.op - 1];
     Branch branch;
     branch.choice = choice;
     for (const Json& option : choice.options) {
       branch.variants.push_back(MakeVariant(op, choice.op, choice.field, option, input));
+    }
+    for (const std::unique_ptr<Op>& variant : branch.variants) {
+      branch.mixed = branch.mixed || variant->output_faces() != op.output_faces() ||
+                     variant->num_output_vertices() != op.num_output_vertices();
+    }
+    if (branch.mixed) {
+      if (choice.op != num_ops - 1) {
+        throw std::invalid_argument("branch choice on op " + std::to_string(choice.op) + " (" + op.Name() + ") field '" +
+                                    choice.field + "': its options give different topologies, supported only on the last op");
+      }
+      for (size_t i = 0, offset = 0; i < branch.variants.size(); ++i) {
+        for (Polygon face : branch.variants[i]->output_faces()) {
+          for (int& v : face) v += static_cast<int>(offset);
+          mixed_faces_.push_back(face);
+          face_options_.push_back(static_cast<int>(i));
+        }
+        offset += branch.variants[i]->num_output_vertices();
+      }
     }
     const size_t k = choice.options.size();
     branch.logits.assign(k, 0.0);
@@ -114,6 +145,9 @@ Program::Program(Sequence* sequence, bool free_gates, const std::vector<BranchCh
     if (sequence->ops[op]->Name() != "Extrude") throw std::invalid_argument(label + ": not an Extrude");
     // Its residuals need the extrusion's faces in the output (solver/boolean_weight.h).
     if (op != num_ops - 1) throw std::invalid_argument(label + ": only the last op can have one");
+    if (branch_of_[op] >= 0 && branches_[branch_of_[op]].mixed) {
+      throw std::invalid_argument(label + ": not with a branch choice of different topologies on it");
+    }
     boolean_weighted[op] = true;
   }
   param_block_.assign(num_ops, -1);
@@ -145,8 +179,10 @@ Program::Program(Sequence* sequence, bool free_gates, const std::vector<BranchCh
     if (branch_of_[k] >= 0) {
       Branch& branch = branches_[branch_of_[k]];
       const int size = static_cast<int>(branch.logits.size());
+      if (branch.mixed) mixed_block_ = static_cast<int>(blocks_.size());
       blocks_.push_back({branch.logits.data(), size, k, false, num_columns_, {}, true});
-      for (int i = 0; i < size; ++i) free_columns_.push_back({k, -1, num_columns_ + i, i});
+      // A mixed branch's output does not depend on its logits (zero columns).
+      for (int i = 0; i < size && !branch.mixed; ++i) free_columns_.push_back({k, -1, num_columns_ + i, i});
       num_columns_ += size;
     }
     if (boolean_weighted[k]) {  // no free column: the positions do not depend on it
@@ -154,6 +190,13 @@ Program::Program(Sequence* sequence, bool free_gates, const std::vector<BranchCh
       blocks_.push_back({&boolean_logits_[k], 1, k, false, num_columns_, {}, false, true});
       num_columns_ += 1;
     }
+  }
+  if (mixed_block_ >= 0) {  // the output until the first evaluation: the variants' sizes
+    const Branch& branch = branches_[branch_of_[num_ops - 1]];
+    size_t total = 0;
+    for (const std::unique_ptr<Op>& variant : branch.variants) total += variant->num_output_vertices();
+    steps_.back().assign(total, Vec3d::Zero());
+    max_vertices = std::max(max_vertices, total);
   }
   jet_in_.reserve(max_vertices);
   jet_out_.reserve(max_vertices);
@@ -199,6 +242,7 @@ void Program::EvaluateOp(int k, const double* params, const double& gate, const 
                          Positions<double>* out) {
   if (branch_of_[k] < 0) return sequence_->ops[k]->Evaluate(params, gate, in, out);
   Branch& branch = branches_[branch_of_[k]];
+  if (branch.mixed) return ConcatenateVariants(branch.variants, params, gate, in, &branch.outputs, out);
   Softmax(branch.logits, &branch.weights);
   BlendVariants(branch.variants, branch.weights, params, gate, in, &branch.outputs, out);
 }
@@ -207,6 +251,7 @@ void Program::EvaluateOp(int k, const JetT* params, const JetT& gate, const Posi
                          Positions<JetT>* out) {
   if (branch_of_[k] < 0) return sequence_->ops[k]->Evaluate(params, gate, in, out);
   Branch& branch = branches_[branch_of_[k]];
+  if (branch.mixed) return ConcatenateVariants(branch.variants, params, gate, in, &branch.jet_outputs, out);
   BlendVariants(branch.variants, branch.jet_weights, params, gate, in, &branch.jet_outputs, out);
 }
 

@@ -17,8 +17,11 @@
 // op k's own parameters and gate (so the continuous parameters are shared; the variants must
 // have op k's parameter layout). A block of K logits alpha gives weights w = softmax(alpha)
 // and op k's output is sum_i w_i out_i, so every later op is unchanged and the Jacobian gains
-// alpha's K columns (dw_i/dalpha_j = w_i (delta_ij - w_j)). Only branches of equal topology
-// (every variant gives op k's output faces) can blend positions; others are rejected.
+// alpha's K columns (dw_i/dalpha_j = w_i (delta_ij - w_j)) when every variant gives op k's
+// output topology. Options of different topology can only be the last op (a "mixed" branch):
+// the output is then the variants' outputs side by side (face_options() says which option a
+// face belongs to), independent of alpha, and the fitter mixes their Chamfer terms with
+// weights w (residuals scaled by sqrt(w_k), residuals/correspondence_cost.h).
 #pragma once
 
 #include <ceres/evaluation_callback.h>
@@ -43,6 +46,8 @@ struct ProgramBlock {
   // Whether the block is the op's parameters (bounded by its specs).
   bool holds_op_params() const { return !is_gate && !is_branch && !is_boolean_weight; }
 };
+
+constexpr int kMaxBranchOptions = 16;
 
 // A discrete choice fitted by softmax branch weights: field `field` of op `op`'s JSON params
 // takes each of `options` (K >= 2), e.g. Mirror's "axes": [["X"], ["Y"], ["Z"]].
@@ -106,7 +111,13 @@ class Program : public ceres::EvaluationCallback {
   bool valid() const { return valid_; }
 
   // Output topology and #V positions.
-  const std::vector<Polygon>& faces() const { return sequence_->ops.empty() ? start_.faces : sequence_->ops.back()->output_faces(); }
+  const std::vector<Polygon>& faces() const {
+    if (!mixed_faces_.empty()) return mixed_faces_;
+    return sequence_->ops.empty() ? start_.faces : sequence_->ops.back()->output_faces();
+  }
+  // A mixed branch (above): its block index (-1: none) and, per output face, its option.
+  int MixedBranchBlock() const { return mixed_block_; }
+  const std::vector<int>& face_options() const { return face_options_; }
   const Positions<double>& positions() const { return steps_.back(); }
   Mesh OutputMesh() const { return {positions(), faces()}; }
   // The 3 rows (x, y, z) of the #3V by num_columns() row-major Jacobian for `vertex`.
@@ -141,6 +152,7 @@ class Program : public ceres::EvaluationCallback {
     std::vector<JetT> jet_weights;
     std::vector<Positions<double>> outputs;
     std::vector<Positions<JetT>> jet_outputs;
+    bool mixed = false;  // options of different topology, side by side in the output
   };
   // Op k's output: its own geometry pass, or the blend of its branch's variants.
   void EvaluateOp(int k, const double* params, const double& gate, const Positions<double>& in,
@@ -148,6 +160,9 @@ class Program : public ceres::EvaluationCallback {
   void EvaluateOp(int k, const JetT* params, const JetT& gate, const Positions<JetT>& in, Positions<JetT>* out);
   std::vector<Branch> branches_;
   std::vector<int> branch_of_;  // per op: index into branches_ or -1
+  std::vector<Polygon> mixed_faces_;  // a mixed branch's output faces, else empty
+  std::vector<int> face_options_;
+  int mixed_block_ = -1;
   std::vector<int> boolean_block_;       // per op: block index of its Boolean weight or -1
   std::vector<double> boolean_logits_;   // per op
   std::vector<FreeColumn> free_columns_;  // ordered by op
