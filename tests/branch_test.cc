@@ -81,6 +81,48 @@ TEST(Branch, JacobianColumnsMatchCentralDifferences) {
   EXPECT_GT(nonzero_branch, 100);  // the logits do move the output
 }
 
+// Fits `start` (its op 2 a Mirror, fitted as a branch over X, Y, Z from uniform weights) to the
+// shape `truth` builds: the fit must pick `axis` (truth's), recover the shape, and the written
+// sequence must re-evaluate to the program's fitted result with truth's topology.
+void ExpectBranchFitPicksTheAxis(const Json& truth_json, const char* start, const char* axis, bool mixed) {
+  Sequence truth = ParseSequence(truth_json);
+  const Mesh target_mesh = EvaluateSequence(&truth).back();
+  TargetOptions target_options;
+  target_options.num_samples = 5000;
+  const Target target(target_mesh, {}, target_options);
+
+  Sequence sequence = ParseSequence(Json::parse(start));
+  FitterOptions options;
+  options.num_output_samples = 2000;
+  options.num_target_samples = 2000;
+  options.branches = {MirrorAndTwistBranches()[0]};
+  if (std::getenv("OPGRAPH_FIT_VERBOSE")) options.progress = &std::cout;
+  Fitter fitter(target, &sequence, options);
+  ASSERT_EQ(fitter.program().MixedBranchBlock() >= 0, mixed);
+  const FitSummary summary = fitter.Fit();
+  ASSERT_EQ(summary.branch_choices.size(), 1u);
+  const std::vector<double>& w = summary.branch_weights[0];
+  const char* kind = mixed ? "mixed" : "blended";
+  std::printf("[branch] %s, target Mirror %s: weights X %.3f Y %.3f Z %.3f -> %s, loss %.3e -> %.3e\n", kind, axis, w[0],
+              w[1], w[2], SequenceToJson(sequence)["operations"][2]["params"]["axes"].dump().c_str(), summary.initial_loss,
+              summary.final_loss);
+  EXPECT_EQ(summary.branch_choices[0], axis[0] - 'X') << axis;
+  EXPECT_EQ(SequenceToJson(sequence)["operations"][2]["params"]["axes"], Json::array({axis}));
+
+  const Mesh fitted = EvaluateSequence(&sequence).back();  // the sequence as written
+  EXPECT_EQ(fitted.faces, target_mesh.faces) << axis;
+  const Mesh program_output = fitter.program().OutputMesh();
+  ASSERT_EQ(fitted.vertices.size(), program_output.vertices.size());
+  for (size_t v = 0; v < fitted.vertices.size(); ++v) {
+    EXPECT_LT((fitted.vertices[v] - program_output.vertices[v]).norm(), 1e-9);
+  }
+  MetricsOptions metrics_options;
+  metrics_options.num_samples = 5000;
+  const double chamfer = ComputeShapeMetrics(fitted, target_mesh, metrics_options).chamfer.Sum();
+  std::printf("[branch] %s, target Mirror %s: Chamfer %.2e\n", kind, axis, chamfer);
+  EXPECT_LT(chamfer, 1e-4) << axis;
+}
+
 // Targets from the same box mirrored about X and about Y: from uniform weights over X, Y, Z and
 // perturbed parameters the fit picks the target's axis, recovers the shape, and the written
 // sequence re-evaluates to the fitted result.
@@ -93,39 +135,7 @@ TEST(Branch, SoftmaxBranchPicksTheMirrorAxis) {
     Json truth_json = Json::parse(kBranchSequence);
     truth_json["operations"].erase(3);
     truth_json["operations"][2]["params"]["axes"] = Json::array({axis});
-    Sequence truth = ParseSequence(truth_json);
-    const Mesh target_mesh = EvaluateSequence(&truth).back();
-    TargetOptions target_options;
-    target_options.num_samples = 5000;
-    const Target target(target_mesh, {}, target_options);
-
-    Sequence sequence = ParseSequence(Json::parse(start));
-    FitterOptions options;
-    options.num_output_samples = 2000;
-    options.num_target_samples = 2000;
-    options.branches = {MirrorAndTwistBranches()[0]};
-    if (std::getenv("OPGRAPH_FIT_VERBOSE")) options.progress = &std::cout;
-    Fitter fitter(target, &sequence, options);
-    const FitSummary summary = fitter.Fit();
-    ASSERT_EQ(summary.branch_choices.size(), 1u);
-    const std::vector<double>& w = summary.branch_weights[0];
-    std::printf("[branch] target Mirror %s: weights X %.3f Y %.3f Z %.3f -> %s, loss %.3e -> %.3e\n", axis, w[0], w[1],
-                w[2], SequenceToJson(sequence)["operations"][2]["params"]["axes"].dump().c_str(), summary.initial_loss,
-                summary.final_loss);
-    EXPECT_EQ(summary.branch_choices[0], axis[0] - 'X') << axis;
-    EXPECT_EQ(SequenceToJson(sequence)["operations"][2]["params"]["axes"], Json::array({axis}));
-
-    const Mesh fitted = EvaluateSequence(&sequence).back();  // the sequence as written
-    const Mesh program_output = fitter.program().OutputMesh();
-    ASSERT_EQ(fitted.vertices.size(), program_output.vertices.size());
-    for (size_t v = 0; v < fitted.vertices.size(); ++v) {
-      EXPECT_LT((fitted.vertices[v] - program_output.vertices[v]).norm(), 1e-9);
-    }
-    MetricsOptions metrics_options;
-    metrics_options.num_samples = 5000;
-    const ShapeMetrics metrics = ComputeShapeMetrics(fitted, target_mesh, metrics_options);
-    std::printf("[branch] target Mirror %s: Chamfer %.2e\n", axis, metrics.chamfer.Sum());
-    EXPECT_LT(metrics.chamfer.Sum(), 1e-4) << axis;
+    ExpectBranchFitPicksTheAxis(truth_json, start, axis, /*mixed=*/false);
   }
 }
 
@@ -173,34 +183,7 @@ TEST(Branch, MixedBranchPicksTheMirrorAxis) {
     truth_json["operations"][0]["params"]["scale"] = {0.5, 0.6, 0.6};
     truth_json["operations"][1]["params"]["offset"] = {0.5, 1.0, 0.3};
     truth_json["operations"][2]["params"]["axes"] = Json::array({axis});
-    Sequence truth = ParseSequence(truth_json);
-    const Mesh target_mesh = EvaluateSequence(&truth).back();
-    TargetOptions target_options;
-    target_options.num_samples = 5000;
-    const Target target(target_mesh, {}, target_options);
-
-    Sequence sequence = ParseSequence(Json::parse(kTouchingStart));
-    FitterOptions options;
-    options.num_output_samples = 2000;
-    options.num_target_samples = 2000;
-    options.branches = {MirrorAndTwistBranches()[0]};
-    if (std::getenv("OPGRAPH_FIT_VERBOSE")) options.progress = &std::cout;
-    Fitter fitter(target, &sequence, options);
-    ASSERT_GE(fitter.program().MixedBranchBlock(), 0);
-    const FitSummary summary = fitter.Fit();
-    ASSERT_EQ(summary.branch_choices.size(), 1u);
-    const std::vector<double>& w = summary.branch_weights[0];
-    std::printf("[branch] mixed, target Mirror %s: weights X %.3f Y %.3f Z %.3f -> %s, loss %.3e -> %.3e\n", axis, w[0],
-                w[1], w[2], SequenceToJson(sequence)["operations"][2]["params"]["axes"].dump().c_str(),
-                summary.initial_loss, summary.final_loss);
-    EXPECT_EQ(SequenceToJson(sequence)["operations"][2]["params"]["axes"], Json::array({axis}));
-    const Mesh fitted = EvaluateSequence(&sequence).back();
-    EXPECT_EQ(fitted.faces, target_mesh.faces) << axis;
-    MetricsOptions metrics_options;
-    metrics_options.num_samples = 5000;
-    const double chamfer = ComputeShapeMetrics(fitted, target_mesh, metrics_options).chamfer.Sum();
-    std::printf("[branch] mixed, target Mirror %s: Chamfer %.2e\n", axis, chamfer);
-    EXPECT_LT(chamfer, 1e-4) << axis;
+    ExpectBranchFitPicksTheAxis(truth_json, kTouchingStart, axis, /*mixed=*/true);
   }
 }
 
