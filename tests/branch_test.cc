@@ -84,7 +84,8 @@ TEST(Branch, JacobianColumnsMatchCentralDifferences) {
 // Fits `start` (its op 2 a Mirror, fitted as a branch over X, Y, Z from uniform weights) to the
 // shape `truth` builds: the fit must pick `axis` (truth's), recover the shape, and the written
 // sequence must re-evaluate to the program's fitted result with truth's topology.
-void ExpectBranchFitPicksTheAxis(const Json& truth_json, const char* start, const char* axis, bool mixed) {
+void ExpectBranchFitPicksTheAxis(const Json& truth_json, const char* start, const char* axis, bool mixed,
+                                 bool fit_gates = false) {
   Sequence truth = ParseSequence(truth_json);
   const Mesh target_mesh = EvaluateSequence(&truth).back();
   TargetOptions target_options;
@@ -96,13 +97,14 @@ void ExpectBranchFitPicksTheAxis(const Json& truth_json, const char* start, cons
   options.num_output_samples = 2000;
   options.num_target_samples = 2000;
   options.branches = {MirrorAndTwistBranches()[0]};
+  options.fit_gates = fit_gates;  // the gate stage and finalisation run after the commit
   if (std::getenv("OPGRAPH_FIT_VERBOSE")) options.progress = &std::cout;
   Fitter fitter(target, &sequence, options);
   ASSERT_EQ(fitter.program().MixedBranchBlock() >= 0, mixed);
   const FitSummary summary = fitter.Fit();
   ASSERT_EQ(summary.branch_choices.size(), 1u);
   const std::vector<double>& w = summary.branch_weights[0];
-  const char* kind = mixed ? "mixed" : "blended";
+  const char* kind = mixed ? "mixed" : (fit_gates ? "blended, with gates" : "blended");
   std::printf("[branch] %s, target Mirror %s: weights X %.3f Y %.3f Z %.3f -> %s, loss %.3e -> %.3e\n", kind, axis, w[0],
               w[1], w[2], SequenceToJson(sequence)["operations"][2]["params"]["axes"].dump().c_str(), summary.initial_loss,
               summary.final_loss);
@@ -136,6 +138,7 @@ TEST(Branch, SoftmaxBranchPicksTheMirrorAxis) {
     truth_json["operations"].erase(3);
     truth_json["operations"][2]["params"]["axes"] = Json::array({axis});
     ExpectBranchFitPicksTheAxis(truth_json, start, axis, /*mixed=*/false);
+    ExpectBranchFitPicksTheAxis(truth_json, start, axis, /*mixed=*/false, /*fit_gates=*/true);
   }
 }
 
