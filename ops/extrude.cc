@@ -34,6 +34,12 @@ void ExtrudeOp::Prepare(const Mesh& input) {
   regions_ = CopyRegions(input, sets, &output_faces_, &num_output_vertices_);
 }
 
+int ExtrudeOp::first_created_face() const {
+  int selected = 0;
+  for (const RegionCopy& group : regions_) selected += static_cast<int>(group.faces.size());
+  return static_cast<int>(input_faces_.size()) - selected;
+}
+
 template <typename T>
 void ExtrudeOp::Apply(const T* p, const T& gate, const Positions<T>& in, Positions<T>* out) const {
   *out = in;

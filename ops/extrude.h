@@ -32,6 +32,13 @@ class ExtrudeOp : public OpBase<ExtrudeOp> {
   template <typename T>
   void Apply(const T* p, const T& gate, const Positions<T>& in, Positions<T>* out) const;
 
+  // The topology pass's result (for the fitter's Boolean weight, solver/boolean_weight.h):
+  // the extruded sets, the input faces, and the first output face the extrusion created (its
+  // caps and side quads follow the unselected faces, set by set).
+  const std::vector<RegionCopy>& regions() const { return regions_; }
+  const std::vector<Polygon>& input_faces() const { return input_faces_; }
+  int first_created_face() const;
+
  private:
   FaceSelector selector_;
   bool individual_ = false;

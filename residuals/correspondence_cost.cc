@@ -16,7 +16,7 @@ bool CorrespondenceCost::Evaluate(double const* const*, double* residuals, doubl
   if (!program_->valid()) return false;
   const SurfaceCorrespondence& c = correspondence_;
   const Positions<double>& positions = program_->positions();
-  Vec3d p = Vec3d::Zero();
+  Vec3d p = c.offset;
   for (int k = 0; k < 3; ++k) p += c.weights[k] * positions[c.vertices[k]];
   const Vec3d difference = p - c.target_point;
   const bool to_plane = metric_ == ChamferMetric::kPointToPlane;
@@ -47,6 +47,60 @@ bool CorrespondenceCost::Evaluate(double const* const*, double* residuals, doubl
     }
   }
   return true;
+}
+
+ScaledCorrespondenceCost::ScaledCorrespondenceCost(const Program* program, const SurfaceCorrespondence& correspondence,
+                                                   ChamferMetric metric, double weight, int scale_block)
+    : unweighted_(program, correspondence, metric, weight), scale_block_(scale_block) {
+  set_num_residuals(unweighted_.num_residuals());
+  *mutable_parameter_block_sizes() = unweighted_.parameter_block_sizes();
+}
+
+bool ScaledCorrespondenceCost::Evaluate(double const* const* parameters, double* residuals, double** jacobians) const {
+  if (!unweighted_.Evaluate(parameters, residuals, jacobians)) return false;
+  double gradient[kMaxBranchOptions];
+  const double s = Scale(parameters[scale_block_], gradient);
+  const int m = num_residuals();
+  if (jacobians) {
+    const std::vector<int32_t>& sizes = parameter_block_sizes();
+    for (size_t b = 0; b < sizes.size(); ++b) {
+      if (jacobians[b] == nullptr) continue;
+      for (int i = 0; i < m * sizes[b]; ++i) jacobians[b][i] *= s;
+    }
+    // The positions do not depend on the scale's block: its columns are d s / d theta x r_c.
+    const int n = sizes[scale_block_];
+    if (jacobians[scale_block_]) {
+      for (int i = 0; i < m; ++i) {
+        for (int j = 0; j < n; ++j) jacobians[scale_block_][i * n + j] = gradient[j] * residuals[i];
+      }
+    }
+  }
+  for (int i = 0; i < m; ++i) residuals[i] *= s;
+  return true;
+}
+
+double BooleanWeightedCost::Scale(const double* theta, double* gradient) const {
+  const double beta = 1.0 / (1.0 + std::exp(-theta[0]));
+  const double s = boolean_side_ ? std::sqrt(beta) : std::sqrt(1 - beta);
+  gradient[0] = boolean_side_ ? 0.5 * s * (1 - beta) : -0.5 * beta * s;  // dbeta/dlogit = beta (1 - beta)
+  return s;
+}
+
+BranchWeightedCost::BranchWeightedCost(const Program* program, const SurfaceCorrespondence& correspondence,
+                                       ChamferMetric metric, double weight, int branch_block, int option)
+    : ScaledCorrespondenceCost(program, correspondence, metric, weight, branch_block),
+      option_(option),
+      num_options_(program->blocks()[branch_block].size) {}
+
+double BranchWeightedCost::Scale(const double* theta, double* gradient) const {
+  const double top = *std::max_element(theta, theta + num_options_);
+  double sum = 0;
+  for (int j = 0; j < num_options_; ++j) sum += gradient[j] = std::exp(theta[j] - top);
+  for (int j = 0; j < num_options_; ++j) gradient[j] /= sum;  // the weights w
+  const double s = std::sqrt(gradient[option_]);
+  // d sqrt(w_k) / d alpha_j = sqrt(w_k) (delta_kj - w_j) / 2.
+  for (int j = 0; j < num_options_; ++j) gradient[j] = 0.5 * s * ((j == option_) - gradient[j]);
+  return s;
 }
 
 bool GateSparsityCost::Evaluate(double const* const* parameters, double* residuals, double** jacobians) const {

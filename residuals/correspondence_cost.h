@@ -20,6 +20,7 @@ struct SurfaceCorrespondence {
   double weights[3];   // barycentric weights of p
   Vec3d target_point;  // q
   Vec3d target_normal; // n (unit)
+  Vec3d offset = Vec3d::Zero();  // added to p: a point of a virtual surface (solver/boolean_weight.h)
 };
 
 enum class ChamferMetric { kPointToPoint, kPointToPlane };
@@ -36,6 +37,53 @@ class CorrespondenceCost : public ceres::CostFunction {
   SurfaceCorrespondence correspondence_;
   ChamferMetric metric_;
   double weight_;
+};
+
+// A correspondence residual r_c scaled by a mixture weight's square root s(theta), theta the
+// program block `scale_block`: r = s r_c, so the cost s^2 |r_c|^2 is the weighted squared
+// distance. Subclasses give s and ds/dtheta.
+class ScaledCorrespondenceCost : public ceres::CostFunction {
+ public:
+  ScaledCorrespondenceCost(const Program* program, const SurfaceCorrespondence& correspondence, ChamferMetric metric,
+                           double weight, int scale_block);
+  bool Evaluate(double const* const* parameters, double* residuals, double** jacobians) const override;
+
+ protected:
+  // s at `theta` (the block's values), with ds/dtheta in `gradient` (block size entries).
+  virtual double Scale(const double* theta, double* gradient) const = 0;
+
+ private:
+  CorrespondenceCost unweighted_;
+  int scale_block_;
+};
+
+// The Boolean weight's terms (solver/boolean_weight.h): s = sqrt(1 - beta) (`boolean_side`
+// false: the extrusion's) or sqrt(beta) (true: the Boolean surface's), beta = sigmoid(logit).
+class BooleanWeightedCost : public ScaledCorrespondenceCost {
+ public:
+  BooleanWeightedCost(const Program* program, const SurfaceCorrespondence& correspondence, ChamferMetric metric,
+                      double weight, int beta_block, bool boolean_side)
+      : ScaledCorrespondenceCost(program, correspondence, metric, weight, beta_block), boolean_side_(boolean_side) {}
+
+ protected:
+  double Scale(const double* theta, double* gradient) const override;
+
+ private:
+  bool boolean_side_;
+};
+
+// A mixed branch's terms (solver/program.h): s = sqrt(w_k), w = softmax(alpha) of the branch's
+// logit block, for a correspondence on option k's surface.
+class BranchWeightedCost : public ScaledCorrespondenceCost {
+ public:
+  BranchWeightedCost(const Program* program, const SurfaceCorrespondence& correspondence, ChamferMetric metric,
+                     double weight, int branch_block, int option);
+
+ protected:
+  double Scale(const double* theta, double* gradient) const override;
+
+ private:
+  int option_, num_options_;
 };
 
 // Gate sparsity: r = sqrt(*weight) sigmoid(w) on a gate logit w, so the cost is weight g^2 / 2.

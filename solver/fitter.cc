@@ -14,6 +14,8 @@
 #include <stdexcept>
 
 #include "core/nearest.h"
+#include "ops/extrude.h"
+#include "solver/boolean_weight.h"
 
 namespace opgraph {
 
@@ -34,6 +36,14 @@ std::string FitterOptions::Check() const {
   if (num_threads < 1) return "num_threads must be >= 1";
   for (const ParameterRangeRule& rule : domain_rules) {
     if (!(rule.weight >= 0) || !(rule.lower <= rule.upper)) return "domain rule: need weight >= 0 and lower <= upper";
+  }
+  for (int op : boolean_weight_ops) {
+    if (op < 0) return "boolean_weight_ops: op indices must be >= 0";
+  }
+  for (const BranchChoice& branch : branches) {
+    if (branch.op < 0 || branch.field.empty() || branch.options.size() < 2) {
+      return "branch choice: need op >= 0, a field and >= 2 options";
+    }
   }
   return "";
 }
@@ -56,11 +66,74 @@ std::unique_ptr<ceres::LossFunction> MakeLoss(RobustLoss kind, double scale) {
   return nullptr;
 }
 
+// The Boolean weight's terms (solver/boolean_weight.h), when the last op has one: beta's
+// block, whether each output-to-target sample lies on the extrusion's faces, and each target
+// point's correspondence on the Boolean surface.
+struct BooleanWeightTerms {
+  int beta_block = -1;
+  std::vector<char> on_extrusion;
+  std::vector<SurfaceCorrespondence> boolean_to_target, target_to_boolean;
+};
+
+// A mixed branch's terms (solver/program.h): per option, output-to-target samples of its own
+// surface and each target point's closest point on it, every residual scaled by
+// sqrt(w_option), so the loss mixes the options' Chamfer terms.
+struct MixedBranchTerms {
+  int block = -1;
+  std::vector<SurfaceCorrespondence> forward, backward;
+  std::vector<int> forward_option, backward_option;
+  double forward_weight = 0, backward_weight = 0;  // residual multipliers (each option's own count)
+};
+
+SurfaceCorrespondence CorrespondenceOnTriangle(const MeshTriangle& triangle, const Vec3d& barycentric,
+                                               const Vec3d& target_point, const Vec3d& target_normal) {
+  SurfaceCorrespondence c;
+  for (int k = 0; k < 3; ++k) c.vertices[k] = triangle.v[k], c.weights[k] = barycentric[k];
+  c.target_point = target_point;
+  c.target_normal = target_normal;
+  return c;
+}
+
+void BuildMixedCorrespondences(const Program& program, const Target& target, const FitterOptions& options,
+                               uint64_t seed, MixedBranchTerms* out) {
+  const Positions<double>& positions = program.positions();
+  const int num_options = program.blocks()[program.MixedBranchBlock()].size;
+  std::vector<std::vector<MeshTriangle>> triangles(num_options);
+  for (const MeshTriangle& t : FanTriangulate(program.faces())) triangles[program.face_options()[t.face]].push_back(t);
+  const int num_target = std::min<int>(options.num_target_samples, static_cast<int>(target.points().size()));
+  out->block = program.MixedBranchBlock();
+  for (int k = 0; k < num_options; ++k) {
+    if (options.output_to_target_weight > 0) {
+      const SurfaceSamples samples = SampleSurface(positions, triangles[k], options.num_output_samples, seed);
+      for (size_t i = 0; i < samples.points.size(); ++i) {
+        const int nearest = target.tree().Nearest(samples.points[i], nullptr);
+        out->forward.push_back(CorrespondenceOnTriangle(triangles[k][samples.triangles[i]], samples.barycentrics[i],
+                                                        target.points()[nearest], target.normals()[nearest]));
+        out->forward_option.push_back(k);
+      }
+    }
+    if (options.target_to_output_weight > 0 && num_target > 0) {
+      const TriangleTree tree(positions, triangles[k]);
+      for (int i = 0; i < num_target; ++i) {
+        const ClosestPoint closest = tree.Closest(target.points()[i]);
+        if (closest.triangle < 0) continue;
+        out->backward.push_back(CorrespondenceOnTriangle(triangles[k][closest.triangle], closest.barycentric,
+                                                         target.points()[i], target.normals()[i]));
+        out->backward_option.push_back(k);
+      }
+    }
+  }
+  out->forward_weight = target.scale() * std::sqrt(options.output_to_target_weight / std::max(1, options.num_output_samples));
+  out->backward_weight = target.scale() * std::sqrt(options.target_to_output_weight / std::max(1, num_target));
+}
+
 }  // namespace
 
 struct Fitter::Correspondences {
   std::vector<SurfaceCorrespondence> output_to_target, target_to_output;
   double output_to_target_weight = 0, target_to_output_weight = 0;  // residual multipliers
+  BooleanWeightTerms boolean;
+  MixedBranchTerms mixed;
 };
 
 // The objective at fixed correspondences: residual blocks that both optimizers and the loss
@@ -81,7 +154,8 @@ Fitter::Fitter(const Target& target, Sequence* sequence, const FitterOptions& op
   const std::string problem = options.Check();
   if (!problem.empty()) throw std::invalid_argument("fitter options: " + problem);
   free_gates_ = options.fit_gates;
-  program_ = std::make_unique<Program>(sequence, free_gates_);
+  boolean_weight_ops_ = options.boolean_weight_ops;
+  program_ = std::make_unique<Program>(sequence, free_gates_, options.branches, boolean_weight_ops_);
   trust_region_radius_ = options.initial_trust_region_radius;
 }
 
@@ -93,7 +167,47 @@ void Fitter::BuildCorrespondences(uint64_t seed, Correspondences* out) {
   const std::vector<MeshTriangle> triangles = FanTriangulate(program_->faces());
   out->output_to_target.clear();
   out->target_to_output.clear();
+  out->boolean = BooleanWeightTerms();
+  out->mixed = MixedBranchTerms();
+  if (program_->MixedBranchBlock() >= 0) {
+    BuildMixedCorrespondences(*program_, target_, options_, seed, &out->mixed);
+    return;
+  }
+  const int last_op = static_cast<int>(sequence_->ops.size()) - 1;
+  out->boolean.beta_block = last_op >= 0 ? program_->BooleanWeightBlock(last_op) : -1;
+  const int first_extruded = out->boolean.beta_block >= 0
+                                 ? static_cast<const ExtrudeOp&>(*sequence_->ops[last_op]).first_created_face()
+                                 : std::numeric_limits<int>::max();
   const double scale = target_.scale();
+  const VirtualSurface boolean_surface =
+      out->boolean.beta_block >= 0 ? BooleanSurface(*program_, last_op) : VirtualSurface();
+  if (options_.output_to_target_weight > 0 && out->boolean.beta_block >= 0) {
+    // B's own faces, sampled at the output's density (solver/boolean_weight.h).
+    std::vector<MeshTriangle> own;
+    for (const MeshTriangle& t : boolean_surface.triangles) {
+      if (t.face >= boolean_surface.first_own_face) own.push_back(t);
+    }
+    auto area = [](const Positions<double>& p, const std::vector<MeshTriangle>& list) {
+      double sum = 0;
+      for (const MeshTriangle& t : list) sum += 0.5 * (p[t.v[1]] - p[t.v[0]]).cross(p[t.v[2]] - p[t.v[0]]).norm();
+      return sum;
+    };
+    const double output_area = area(positions, triangles);
+    const int count = output_area > 0 ? static_cast<int>(std::lround(options_.num_output_samples *
+                                                                      area(boolean_surface.positions, own) / output_area))
+                                      : 0;
+    const SurfaceSamples samples = SampleSurface(boolean_surface.positions, own, count, seed + 1);
+    std::vector<int> own_index;  // own triangle -> index in boolean_surface.triangles
+    for (size_t t = 0; t < boolean_surface.triangles.size(); ++t) {
+      if (boolean_surface.triangles[t].face >= boolean_surface.first_own_face) own_index.push_back(static_cast<int>(t));
+    }
+    for (size_t i = 0; i < samples.points.size(); ++i) {
+      const int nearest = target_.tree().Nearest(samples.points[i], nullptr);
+      out->boolean.boolean_to_target.push_back(CorrespondenceOnSurface(boolean_surface, own_index[samples.triangles[i]],
+                                                                       samples.barycentrics[i], target_.points()[nearest],
+                                                                       target_.normals()[nearest]));
+    }
+  }
   if (options_.output_to_target_weight > 0) {
     const SurfaceSamples samples = SampleSurface(positions, triangles, options_.num_output_samples, seed);
     for (size_t i = 0; i < samples.points.size(); ++i) {
@@ -104,6 +218,7 @@ void Fitter::BuildCorrespondences(uint64_t seed, Correspondences* out) {
       c.target_point = target_.points()[nearest];
       c.target_normal = target_.normals()[nearest];
       out->output_to_target.push_back(c);
+      out->boolean.on_extrusion.push_back(t.face >= first_extruded);
     }
     out->output_to_target_weight =
         scale * std::sqrt(options_.output_to_target_weight / std::max<size_t>(1, out->output_to_target.size()));
@@ -111,7 +226,19 @@ void Fitter::BuildCorrespondences(uint64_t seed, Correspondences* out) {
   const int num_target = std::min<int>(options_.num_target_samples, static_cast<int>(target_.points().size()));
   if (options_.target_to_output_weight > 0 && num_target > 0) {
     const TriangleTree tree(positions, triangles);
+    std::unique_ptr<TriangleTree> boolean_tree;
+    if (out->boolean.beta_block >= 0) {
+      boolean_tree = std::make_unique<TriangleTree>(boolean_surface.positions, boolean_surface.triangles);
+    }
     for (int i = 0; i < num_target; ++i) {
+      if (out->boolean.beta_block >= 0) {
+        const ClosestPoint on_boolean = boolean_tree->Closest(target_.points()[i]);
+        if (on_boolean.triangle >= 0) {
+          out->boolean.target_to_boolean.push_back(
+              CorrespondenceOnSurface(boolean_surface, on_boolean.triangle, on_boolean.barycentric, target_.points()[i],
+                                      target_.normals()[i]));
+        }
+      }
       const ClosestPoint closest = tree.Closest(target_.points()[i]);
       if (closest.triangle < 0) continue;
       SurfaceCorrespondence c;
@@ -131,20 +258,48 @@ namespace {
 void BuildObjective(const Program& program, const FitterOptions& options, double unit_scale,
                     const std::vector<SurfaceCorrespondence>& forward, double forward_weight,
                     const std::vector<SurfaceCorrespondence>& backward, double backward_weight,
-                    const double* sparsity_weight, Objective* objective) {
+                    const BooleanWeightTerms& boolean, const MixedBranchTerms& mixed, const double* sparsity_weight,
+                    Objective* objective) {
   const std::vector<double*> all_blocks = program.BlockPointers();
-  auto add_terms = [&](const std::vector<SurfaceCorrespondence>& list, double weight) {
+  // Which residuals the Boolean weight scales (solver/boolean_weight.h): `on_extrusion` selects
+  // (when given) the ones scaled by sqrt(1 - beta); the Boolean side's by sqrt(beta).
+  enum class Scale { kNone, kExtrusion, kBoolean };
+  auto add_terms = [&](const std::vector<SurfaceCorrespondence>& list, double weight, const std::vector<char>* on_extrusion,
+                       Scale scale) {
     // The robust loss acts on the residual weight * (p - q) = sqrt(w / N) * (distance in the
     // unit box), so its scale (unit-box units) is multiplied by sqrt(w / N) = weight / unit_scale.
     objective->losses.push_back(MakeLoss(options.loss, options.loss_scale * weight / unit_scale));
     const ceres::LossFunction* loss = objective->losses.back().get();
-    for (const SurfaceCorrespondence& c : list) {
-      objective->terms.push_back(
-          {std::make_unique<CorrespondenceCost>(&program, c, options.metric, weight), loss, all_blocks, {}});
+    for (size_t i = 0; i < list.size(); ++i) {
+      const Scale s = on_extrusion && !(*on_extrusion)[i] ? Scale::kNone : scale;
+      std::unique_ptr<ceres::CostFunction> cost;
+      if (s == Scale::kNone) {
+        cost = std::make_unique<CorrespondenceCost>(&program, list[i], options.metric, weight);
+      } else {
+        cost = std::make_unique<BooleanWeightedCost>(&program, list[i], options.metric, weight, boolean.beta_block,
+                                                     s == Scale::kBoolean);
+      }
+      objective->terms.push_back({std::move(cost), loss, all_blocks, {}});
     }
   };
-  add_terms(forward, forward_weight);
-  add_terms(backward, backward_weight);
+  const bool weighted = boolean.beta_block >= 0;
+  add_terms(forward, forward_weight, weighted ? &boolean.on_extrusion : nullptr, weighted ? Scale::kExtrusion : Scale::kNone);
+  add_terms(backward, backward_weight, nullptr, weighted ? Scale::kExtrusion : Scale::kNone);
+  if (weighted) {
+    add_terms(boolean.boolean_to_target, forward_weight, nullptr, Scale::kBoolean);
+    add_terms(boolean.target_to_boolean, backward_weight, nullptr, Scale::kBoolean);
+  }
+  auto add_mixed_terms = [&](const std::vector<SurfaceCorrespondence>& list, const std::vector<int>& option,
+                             double weight) {
+    objective->losses.push_back(MakeLoss(options.loss, options.loss_scale * weight / unit_scale));
+    for (size_t i = 0; i < list.size(); ++i) {
+      objective->terms.push_back({std::make_unique<BranchWeightedCost>(&program, list[i], options.metric, weight,
+                                                                       mixed.block, option[i]),
+                                  objective->losses.back().get(), all_blocks, {}});
+    }
+  };
+  add_mixed_terms(mixed.forward, mixed.forward_option, mixed.forward_weight);
+  add_mixed_terms(mixed.backward, mixed.backward_option, mixed.backward_weight);
   for (const ProgramBlock& block : program.blocks()) {
     if (block.is_gate) {
       objective->terms.push_back({std::make_unique<GateSparsityCost>(sparsity_weight), nullptr, {block.data}, {}});
@@ -152,7 +307,7 @@ void BuildObjective(const Program& program, const FitterOptions& options, double
   }
   for (const ParameterRangeRule& rule : options.domain_rules) {
     for (const ProgramBlock& block : program.blocks()) {
-      if (!block.is_gate && block.op == rule.op && rule.param >= 0 && rule.param < block.size) {
+      if (block.holds_op_params() && block.op == rule.op && rule.param >= 0 && rule.param < block.size) {
         objective->terms.push_back({std::make_unique<ParameterRangeCost>(rule, block.size), nullptr, {block.data}, {}});
       }
     }
@@ -216,7 +371,7 @@ double Fitter::CurrentLoss() {
   Objective objective;
   BuildObjective(*program_, options_, target_.scale(), correspondences.output_to_target,
                  correspondences.output_to_target_weight, correspondences.target_to_output,
-                 correspondences.target_to_output_weight, &sparsity_weight_, &objective);
+                 correspondences.target_to_output_weight, correspondences.boolean, correspondences.mixed, &sparsity_weight_, &objective);
   program_->PrepareForEvaluation(false, true);
   std::vector<double> r, j;
   return EvaluateObjective(*program_, objective, nullptr, &r, &j);
@@ -230,7 +385,7 @@ void Fitter::AddToProblem(const Objective& objective, ceres::Problem* problem) c
     } else if (!block.constant.empty()) {
       problem->SetManifold(block.data, new ceres::SubsetManifold(block.size, block.constant));
     }
-    if (!block.is_gate) {
+    if (block.holds_op_params()) {
       const std::vector<ParamSpec>& specs = sequence_->ops[block.op]->specs();
       for (int i = 0; i < block.size; ++i) {
         problem->SetParameterLowerBound(block.data, i, specs[i].lower);
@@ -250,7 +405,7 @@ void Fitter::EvaluateBothWays(double* own_loss, std::vector<double>* own_gradien
   Objective objective;
   BuildObjective(*program_, options_, target_.scale(), correspondences.output_to_target,
                  correspondences.output_to_target_weight, correspondences.target_to_output,
-                 correspondences.target_to_output_weight, &sparsity_weight_, &objective);
+                 correspondences.target_to_output_weight, correspondences.boolean, correspondences.mixed, &sparsity_weight_, &objective);
   program_->PrepareForEvaluation(true, true);
   std::vector<double> r, j;
   *own_loss = EvaluateObjective(*program_, objective, own_gradient, &r, &j);
@@ -271,7 +426,7 @@ double Fitter::Solve(const Correspondences& correspondences, double sparsity_wei
   Objective objective;
   BuildObjective(*program_, options_, target_.scale(), correspondences.output_to_target,
                  correspondences.output_to_target_weight, correspondences.target_to_output,
-                 correspondences.target_to_output_weight, &sparsity_weight_, &objective);
+                 correspondences.target_to_output_weight, correspondences.boolean, correspondences.mixed, &sparsity_weight_, &objective);
   const std::vector<ProgramBlock>& blocks = program_->blocks();
 
   if (options_.optimizer == Optimizer::kCeres) {
@@ -316,7 +471,7 @@ double Fitter::Solve(const Correspondences& correspondences, double sparsity_wei
       free[block.column + i] = std::count(block.constant.begin(), block.constant.end(), i) == 0 &&
                                !(block.is_gate ? hold_gates_ : hold_params_);
       address[block.column + i] = block.data + i;
-      if (!block.is_gate) {
+      if (block.holds_op_params()) {
         lower[block.column + i] = sequence_->ops[block.op]->specs()[i].lower;
         upper[block.column + i] = sequence_->ops[block.op]->specs()[i].upper;
       }
@@ -362,14 +517,18 @@ Fitter::Reproduction Fitter::CheckReproduction() const {
 }
 
 bool Fitter::ResolveTopology() {
+  // A blend of branches is no written sequence; its topology is fixed until CommitBranches.
+  if (program_->num_branches() > 0) return true;
   const Reproduction reproduction = CheckReproduction();
   if (reproduction != Reproduction::kDifferent) return reproduction == Reproduction::kSame;
   // The copy evaluated with these parameters and gates, so the sequence itself will too.
   const std::vector<double> logits = program_->logits();
   program_->StoreGates();
   retired_jacobian_evaluations_ += program_->num_jacobian_evaluations();
-  program_ = std::make_unique<Program>(sequence_, free_gates_);
+  const std::vector<double> boolean_logits = program_->boolean_logits();
+  program_ = std::make_unique<Program>(sequence_, free_gates_, std::vector<BranchChoice>(), boolean_weight_ops_);
   program_->set_logits(logits);  // exact gates (the constructor clamps them)
+  program_->set_boolean_logits(boolean_logits);
   program_->PrepareForEvaluation(false, true);
   return true;
 }
@@ -391,7 +550,7 @@ double Fitter::RunStage(double sparsity_weight, FitSummary* summary) {
   };
   // Start inside the bounds (Ceres needs a feasible start).
   for (const ProgramBlock& b : program_->blocks()) {
-    if (b.is_gate) continue;
+    if (!b.holds_op_params()) continue;
     const std::vector<ParamSpec>& specs = sequence_->ops[b.op]->specs();
     for (int i = 0; i < b.size; ++i) b.data[i] = std::min(specs[i].upper, std::max(specs[i].lower, b.data[i]));
   }
@@ -409,7 +568,7 @@ double Fitter::RunStage(double sparsity_weight, FitSummary* summary) {
     Objective objective;
     BuildObjective(*program_, options_, target_.scale(), correspondences.output_to_target,
                    correspondences.output_to_target_weight, correspondences.target_to_output,
-                   correspondences.target_to_output_weight, &sparsity_weight_, &objective);
+                   correspondences.target_to_output_weight, correspondences.boolean, correspondences.mixed, &sparsity_weight_, &objective);
     program_->PrepareForEvaluation(false, true);
     std::vector<double> r, j;
     const double fresh = EvaluateObjective(*program_, objective, nullptr, &r, &j);
@@ -451,6 +610,26 @@ double Fitter::RunStage(double sparsity_weight, FitSummary* summary) {
   ResolveTopology();
   program_->PrepareForEvaluation(false, true);
   return best;
+}
+
+bool Fitter::CommitBranches(FitSummary* summary) {
+  if (program_->num_branches() == 0) return false;
+  for (int b = 0; b < program_->num_branches(); ++b) {
+    const std::vector<double> weights = program_->BranchWeights(b);
+    summary->branch_weights.push_back(weights);
+    summary->branch_choices.push_back(static_cast<int>(std::max_element(weights.begin(), weights.end()) - weights.begin()));
+  }
+  const std::vector<double> logits = program_->logits();
+  const std::vector<double> boolean_logits = program_->boolean_logits();
+  program_->CommitBranches();
+  retired_jacobian_evaluations_ += program_->num_jacobian_evaluations();
+  program_ = std::make_unique<Program>(sequence_, free_gates_, std::vector<BranchChoice>(), boolean_weight_ops_);
+  program_->set_logits(logits);  // exact gates (the constructor clamps them)
+  program_->set_boolean_logits(boolean_logits);
+  if (options_.progress) {
+    *options_.progress << "fit: committed " << summary->branch_choices.size() << " branch choice(s); polishing\n";
+  }
+  return true;
 }
 
 void Fitter::Finalise(FitSummary* summary) {
@@ -509,13 +688,18 @@ FitSummary Fitter::Fit() {
     // under the penalty would shrink every gate and inflate the parameters to compensate).
     hold_gates_ = true;
     RunStage(0.0, &summary);
+    if (CommitBranches(&summary)) RunStage(0.0, &summary);
     hold_gates_ = false;
     hold_params_ = true;
     RunStage(options_.gate_sparsity_weight, &summary);
     hold_params_ = false;
+    for (int op : boolean_weight_ops_) summary.boolean_weights.push_back(program_->BooleanWeight(op));
+    boolean_weight_ops_.clear();
     Finalise(&summary);
   } else {
     RunStage(0.0, &summary);
+    if (CommitBranches(&summary)) RunStage(0.0, &summary);
+    for (int op : boolean_weight_ops_) summary.boolean_weights.push_back(program_->BooleanWeight(op));
     program_->StoreGates();
   }
   sparsity_weight_ = 0;

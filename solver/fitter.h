@@ -12,6 +12,18 @@
 // and a last solve polishes the parameters with gates fixed, so the result is exportable to
 // Blender.
 //
+// Branch choices (options.branches; program.h): a discrete field of an op fitted by softmax
+// weights over its options, alongside the parameters in the first stage (while they are
+// active the topology is not re-resolved: the blend is no single written sequence). After it
+// the most weighted option is written into the op (CommitBranches) and the rest of the fit
+// (gate stage, finalisation, or a polishing solve) runs on the sequence as written.
+//
+// Boolean weight (options.boolean_weight_ops; solver/boolean_weight.h): the last op, an
+// Extrude, gets beta = sigmoid(logit), fitted with the parameters; its extrusion's residuals
+// are scaled by sqrt(1 - beta) and each target point's term mixes its distances to the
+// extruded and to the Boolean surface. FitSummary::boolean_weights reports beta; the Extrude
+// stays in the sequence (ExtrudeToBoolean converts it, for a controller to apply once).
+//
 // Discrete choices are made by the topology passes at the start parameters and re-made at each
 // correspondence update when the parameters have moved them (a Boolean's intersection, the
 // elements a geometric target selects); the result is the best parameter set at which the
@@ -58,6 +70,11 @@ struct FitterOptions {
   int num_threads = 1;
   uint64_t seed = 1;
   std::vector<ParameterRangeRule> domain_rules;
+  // Discrete choices fitted by softmax branch weights (program.h): options of equal topology
+  // blend positions; options of different topology (last op only) mix their Chamfer terms.
+  std::vector<BranchChoice> branches;
+  // Extrude ops given the Boolean weight beta (only the last op; solver/boolean_weight.h).
+  std::vector<int> boolean_weight_ops;
   std::ostream* progress = nullptr;  // one line per solve when set
   // Empty when valid, else the problem.
   std::string Check() const;
@@ -72,6 +89,12 @@ struct FitSummary {
   double seconds = 0;
   std::vector<double> gates_before_finalisation;  // per op of the input sequence
   std::vector<int> pruned_ops;                    // indices in the input sequence
+  // Per branch choice (options.branches order): the weights when committed, and the option
+  // chosen (their argmax).
+  std::vector<std::vector<double>> branch_weights;
+  std::vector<int> branch_choices;
+  // Per boolean_weight_ops entry: beta after the parameter stage.
+  std::vector<double> boolean_weights;
   // The loss with fresh correspondences (a function of the parameters only, so comparable
   // across optimizers) at each correspondence update and at the end.
   struct Point {
@@ -116,6 +139,9 @@ class Fitter {
   double RunStage(double sparsity_weight, FitSummary* summary);
   double Solve(const Correspondences& correspondences, double sparsity_weight, FitSummary* summary);
   void Finalise(FitSummary* summary);
+  // Writes the branch choices' argmax into the sequence and rebuilds the program without them.
+  // Returns whether there were any.
+  bool CommitBranches(FitSummary* summary);
   // Whether the sequence as it would be written (re-parsed, topology passes re-run) rebuilds
   // the program's current output, gives another topology or output, or fails to evaluate.
   enum class Reproduction { kSame, kDifferent, kFails };
@@ -132,6 +158,7 @@ class Fitter {
   double trust_region_radius_ = 0;
   bool hold_params_ = false, hold_gates_ = false;
   bool free_gates_ = false;
+  std::vector<int> boolean_weight_ops_;  // cleared when the gate finalisation renumbers ops
   int retired_jacobian_evaluations_ = 0;  // by programs replaced during the fit  // blocks held constant in the current stage
   uint64_t update_count_ = 0;
   double start_time_ = 0;

@@ -19,7 +19,7 @@ int PerturbParameters(const Program& program, const Sequence& sequence, uint64_t
   std::mt19937_64 rng(seed);
   int count = 0;
   for (const ProgramBlock& block : program.blocks()) {
-    if (block.is_gate) continue;
+    if (!block.holds_op_params()) continue;
     const Op& op = *sequence.ops[block.op];
     for (int i = 0; i < block.size; ++i) {
       if (std::count(block.constant.begin(), block.constant.end(), i)) continue;
