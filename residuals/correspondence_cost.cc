@@ -8,7 +8,7 @@ namespace opgraph {
 CorrespondenceCost::CorrespondenceCost(const Program* program, const SurfaceCorrespondence& correspondence,
                                        ChamferMetric metric, double weight)
     : program_(program), correspondence_(correspondence), metric_(metric), weight_(weight) {
-  set_num_residuals(metric == ChamferMetric::kPointToPoint ? 3 : 1);
+  set_num_residuals(metric == ChamferMetric::kPointToPoint ? 3 : metric == ChamferMetric::kPointToPlane ? 1 : 4);
   *mutable_parameter_block_sizes() = program->BlockSizes();
 }
 
@@ -19,11 +19,14 @@ bool CorrespondenceCost::Evaluate(double const* const*, double* residuals, doubl
   Vec3d p = c.offset;
   for (int k = 0; k < 3; ++k) p += c.weights[k] * positions[c.vertices[k]];
   const Vec3d difference = p - c.target_point;
-  const bool to_plane = metric_ == ChamferMetric::kPointToPlane;
-  if (to_plane) {
-    residuals[0] = weight_ * c.target_normal.dot(difference);
-  } else {
-    for (int d = 0; d < 3; ++d) residuals[d] = weight_ * difference[d];
+  // Residual layout: [n . d] for point-to-plane, [d] for point-to-point, [n . d, a d] for both
+  // (a = kPointToPointShare).
+  const bool plane = metric_ != ChamferMetric::kPointToPoint, point = metric_ != ChamferMetric::kPointToPlane;
+  const double point_weight = weight_ * (plane ? kPointToPointShare : 1.0);
+  const int first_point = plane ? 1 : 0;
+  if (plane) residuals[0] = weight_ * c.target_normal.dot(difference);
+  if (point) {
+    for (int d = 0; d < 3; ++d) residuals[first_point + d] = point_weight * difference[d];
   }
   if (jacobians == nullptr) return true;
   const int num_columns = program_->num_columns();
@@ -39,10 +42,11 @@ bool CorrespondenceCost::Evaluate(double const* const*, double* residuals, doubl
         const size_t offset = static_cast<size_t>(d) * num_columns + column + j;
         dp[d] = c.weights[0] * rows[0][offset] + c.weights[1] * rows[1][offset] + c.weights[2] * rows[2][offset];
       }
-      if (to_plane) {
+      if (plane) {
         jacobians[b][j] = weight_ * (c.target_normal[0] * dp[0] + c.target_normal[1] * dp[1] + c.target_normal[2] * dp[2]);
-      } else {
-        for (int d = 0; d < 3; ++d) jacobians[b][d * size + j] = weight_ * dp[d];
+      }
+      if (point) {
+        for (int d = 0; d < 3; ++d) jacobians[b][(first_point + d) * size + j] = point_weight * dp[d];
       }
     }
   }

@@ -4,6 +4,10 @@
 // sample; target-to-output terms use a target sample and its closest output point.
 //   point-to-point: r = weight (p - q)            (3 residuals)
 //   point-to-plane: r = weight n . (p - q)        (1 residual; n the target's normal)
+//   plane and point: r = weight (n . (p - q), a (p - q))  (4 residuals; a = kPointToPointShare):
+//                   point-to-plane's fast convergence on flat parts, with a point-to-point share
+//                   so that a surface cannot leave part of the target uncovered by sliding along
+//                   its plane (a closest point there has zero point-to-plane distance).
 // p and dp/dparams come from the Program's cache (chain rule through the barycentric weights);
 // the parameter blocks are all the Program's blocks, in its order.
 #pragma once
@@ -23,7 +27,8 @@ struct SurfaceCorrespondence {
   Vec3d offset = Vec3d::Zero();  // added to p: a point of a virtual surface (solver/boolean_weight.h)
 };
 
-enum class ChamferMetric { kPointToPoint, kPointToPlane };
+enum class ChamferMetric { kPointToPoint, kPointToPlane, kPlaneAndPoint };
+constexpr double kPointToPointShare = 0.3;
 
 class CorrespondenceCost : public ceres::CostFunction {
  public:

@@ -92,6 +92,7 @@ class Controller {
     search_options_.seed = options.seed;
     search_options_.num_threads = options.num_threads;
     search_options_.optimizer = options.optimizer;
+    search_options_.metric = options.metric;
     search_options_.num_output_samples = 1500;
     search_options_.num_target_samples = 1500;
     search_options_.max_outer_iterations = 8;

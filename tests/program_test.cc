@@ -73,6 +73,8 @@ TEST(Residuals, JacobiansMatchCentralDifferences) {
     const CorrespondenceCost to_plane(&program, c, ChamferMetric::kPointToPlane, 1.3);
     ExpectFittedColumnsMatch(&program, to_point, "point-to-point");
     ExpectFittedColumnsMatch(&program, to_plane, "point-to-plane");
+    const CorrespondenceCost to_both(&program, c, ChamferMetric::kPlaneAndPoint, 0.9);
+    ExpectFittedColumnsMatch(&program, to_both, "plane and point");
   }
 }
 
