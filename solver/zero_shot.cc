@@ -114,10 +114,12 @@ class Controller {
       const double before = best.loss;
       best = StageProfile(best);
       best = StageDeforms(best);
-      best = StageBevel(best);
       best = StageHoles(best);
       best = RepeatDetails(best);
       best = StageGrid(best);
+      // Rounding comes after the extrusions, as a modeller would bevel: a bevel first would
+      // round the cage toward a protrusion and split its faces below the extrusions' support.
+      best = StageBevel(best);
       best = ConsiderSmoothing(best);
       if (!(best.loss < before)) break;
     }
