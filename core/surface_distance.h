@@ -1,7 +1,7 @@
 // Point-to-surface distances between polygon meshes (a polygon's surface: the union of its fan
 // triangulations from every corner, so it does not depend on where the loop starts), used for
-// parity checks against Blender. Exact closest-point queries, brute force over triangles:
-// meant for test-sized meshes (up to some 10^4 faces).
+// parity checks against Blender. Exact closest-point queries (core/nearest.h's bounding-volume
+// hierarchy).
 #pragma once
 
 #include "core/mesh.h"

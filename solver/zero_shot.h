@@ -26,7 +26,9 @@
 namespace opgraph {
 
 struct ZeroShotOptions {
-  double time_budget_seconds = 90;  // the controller stops proposing after this
+  // Total wall time aimed at: proposals stop at 65% of it, the finishing fits take the rest
+  // (they are not cut short, so a run can end somewhat past it).
+  double time_budget_seconds = 90;
   int max_ops = 24;
   double min_relative_gain = 0.08;  // a proposal must lower the loss by this fraction
   uint64_t seed = 1;
