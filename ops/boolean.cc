@@ -433,6 +433,14 @@ void BooleanOp::Prepare(const Mesh& input) {
       }
     }
     if (best <= 1e-6) throw FieldError("operation", "internal: an intersection point of the boolean has no source");
+    // A grazing crossing (an edge within a few degrees of the plane it crosses) moves along the
+    // edge by the plane's rounding error over the sine: Blender's float32 coordinates would put
+    // it elsewhere, so the sequence would not rebuild the same mesh there.
+    if (best < kMinCrossingSine) {
+      throw FieldError("operation", "the primitive crosses the mesh at a grazing angle (" +
+                                        std::to_string(std::asin(best) * 180 / kPi).substr(0, 4) +
+                                        " degrees): the intersection is ill-conditioned");
+    }
   }
 
   // Source polygon of each result triangle: that of the operand triangle it is (uncut), else the

@@ -20,6 +20,9 @@
 // the same two neighbours in every polygon around it, in a straight line, is dissolved.
 // Counts can differ from Blender's on exact ties and on booleans of non-planar polygons an
 // earlier boolean cut (same surface); see docs/sequence-format.md.
+// A crossing where the best-conditioned edge lies within kMinCrossingSine (sine of the angle)
+// of the plane it crosses is refused (FieldError "operation"): its position would amplify the
+// rounding of Blender's float32 coordinates past the parity tolerance.
 //
 // JSON: {"operation": "UNION"|"DIFFERENCE", "primitive": "cube"|"prism6"|"prism8"|"cylinder",
 //        "size": [sx, sy, sz] (> 0, full extents), "rotation_deg": [3] (default 0),
@@ -35,6 +38,8 @@
 #include "ops/op.h"
 
 namespace opgraph {
+
+constexpr double kMinCrossingSine = 0.02;  // about 1.1 degrees
 
 class BooleanOp : public OpBase<BooleanOp> {
  public:

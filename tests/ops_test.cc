@@ -297,6 +297,9 @@ INSTANTIATE_TEST_SUITE_P(
                  "operation 0 (VertexDisplace): field 'groups[0].verts': vertex 8 does not exist at this step"},
         BadInput{"knife_zero_normal", R"({"operations": [{"op": "KnifeCut", "params": {"plane_co": [0, 0, 0], "plane_no": [0, 0, 0]}}]})",
                  "operation 0 (KnifeCut): field 'plane_no': must not be zero"},
+        // A cutter tilted 0.5 degrees off the top face, crossing it: ill-conditioned in float32.
+        BadInput{"boolean_grazing", R"({"operations": [{"op": "Boolean", "params": {"operation": "DIFFERENCE", "primitive": "cube", "size": [1, 1, 1], "rotation_deg": [0.5, 0, 0], "location": [0, 0, 1.5]}}]})",
+                 "operation 0 (Boolean): field 'operation': the primitive crosses the mesh at a grazing angle (0.35 degrees): the intersection is ill-conditioned"},
         BadInput{"bad_word", R"({"operations": [{"op": "SimpleDeformTwist", "params": {"axis": "W'); import os; ('", "angle_deg": 10}}]})",
                  "operation 0 (SimpleDeformTwist): field 'axis': 'W'); import os; ('' is not one of X, Y, Z"},
         BadInput{"boolean_primitive",
