@@ -365,13 +365,18 @@ double EvaluateObjective(const Program& program, const Objective& objective, std
 
 }  // namespace
 
+void Fitter::MakeObjective(const Correspondences& correspondences, Objective* objective) const {
+  BuildObjective(*program_, options_, target_.scale(), correspondences.output_to_target,
+                 correspondences.output_to_target_weight, correspondences.target_to_output,
+                 correspondences.target_to_output_weight, correspondences.boolean, correspondences.mixed, &sparsity_weight_,
+                 objective);
+}
+
 double Fitter::CurrentLoss() {
   Correspondences correspondences;
   BuildCorrespondences(options_.seed, &correspondences);
   Objective objective;
-  BuildObjective(*program_, options_, target_.scale(), correspondences.output_to_target,
-                 correspondences.output_to_target_weight, correspondences.target_to_output,
-                 correspondences.target_to_output_weight, correspondences.boolean, correspondences.mixed, &sparsity_weight_, &objective);
+  MakeObjective(correspondences, &objective);
   program_->PrepareForEvaluation(false, true);
   std::vector<double> r, j;
   return EvaluateObjective(*program_, objective, nullptr, &r, &j);
@@ -403,9 +408,7 @@ void Fitter::EvaluateBothWays(double* own_loss, std::vector<double>* own_gradien
   Correspondences correspondences;
   BuildCorrespondences(options_.seed, &correspondences);
   Objective objective;
-  BuildObjective(*program_, options_, target_.scale(), correspondences.output_to_target,
-                 correspondences.output_to_target_weight, correspondences.target_to_output,
-                 correspondences.target_to_output_weight, correspondences.boolean, correspondences.mixed, &sparsity_weight_, &objective);
+  MakeObjective(correspondences, &objective);
   program_->PrepareForEvaluation(true, true);
   std::vector<double> r, j;
   *own_loss = EvaluateObjective(*program_, objective, own_gradient, &r, &j);
@@ -424,9 +427,7 @@ void Fitter::EvaluateBothWays(double* own_loss, std::vector<double>* own_gradien
 double Fitter::Solve(const Correspondences& correspondences, double sparsity_weight, FitSummary* summary) {
   sparsity_weight_ = sparsity_weight;
   Objective objective;
-  BuildObjective(*program_, options_, target_.scale(), correspondences.output_to_target,
-                 correspondences.output_to_target_weight, correspondences.target_to_output,
-                 correspondences.target_to_output_weight, correspondences.boolean, correspondences.mixed, &sparsity_weight_, &objective);
+  MakeObjective(correspondences, &objective);
   const std::vector<ProgramBlock>& blocks = program_->blocks();
 
   if (options_.optimizer == Optimizer::kCeres) {
@@ -566,9 +567,7 @@ double Fitter::RunStage(double sparsity_weight, FitSummary* summary) {
     // The same seed every update: samples move smoothly with the shape, so losses compare.
     BuildCorrespondences(options_.seed, &correspondences);
     Objective objective;
-    BuildObjective(*program_, options_, target_.scale(), correspondences.output_to_target,
-                   correspondences.output_to_target_weight, correspondences.target_to_output,
-                   correspondences.target_to_output_weight, correspondences.boolean, correspondences.mixed, &sparsity_weight_, &objective);
+    MakeObjective(correspondences, &objective);
     program_->PrepareForEvaluation(false, true);
     std::vector<double> r, j;
     const double fresh = EvaluateObjective(*program_, objective, nullptr, &r, &j);

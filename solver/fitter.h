@@ -136,6 +136,8 @@ class Fitter {
   struct Correspondences;
   void AddToProblem(const Objective& objective, ceres::Problem* problem) const;
   void BuildCorrespondences(uint64_t seed, Correspondences* out);
+  // The residual blocks at fixed correspondences (the current stage's sparsity weight).
+  void MakeObjective(const Correspondences& correspondences, Objective* objective) const;
   double RunStage(double sparsity_weight, FitSummary* summary);
   double Solve(const Correspondences& correspondences, double sparsity_weight, FitSummary* summary);
   void Finalise(FitSummary* summary);
