@@ -7,11 +7,14 @@
 #include <cmath>
 #include <limits>
 #include <ostream>
+#include <set>
+#include <tuple>
 #include <sstream>
 
 #include "core/geometry.h"
 #include "core/metrics.h"
 #include "ops/sequence.h"
+#include "solver/scale_first.h"
 
 namespace opgraph {
 namespace {
@@ -26,6 +29,7 @@ Json MakeOp(const std::string& name, Json params) { return {{"op", name}, {"para
 // documents; splitting a fitted document back into parts relies on fits keeping the op count.
 struct Layout {
   std::vector<Json> profile;  // on the 2x2x2 cube: loop cuts along the long axis, loop scales
+  std::string profile_name;   // which profile proposal `profile` is, empty when none
   std::vector<Json> grid;     // then: loop cuts across the other axes, loop scales
   Json scale, rotate, translate;
   std::vector<Json> deforms;
@@ -60,12 +64,17 @@ struct Layout {
     for (Json& op : out.grid) op = ops[i++];
     // A loop lies in a plane across its cut axis, so scaling along that axis about the loop's
     // median does nothing; the fit leaves it drifting (to 1e4 and more), and Blender's float
-    // coordinates would turn that into real offsets. Pin it to 1.
+    // coordinates would turn that into real offsets. Pin it to 1 where the box holds one loop
+    // (narrower than the cut spacing); for several loops it spaces them and is kept.
     for (std::vector<Json>* part : {&out.profile, &out.grid}) {
+      double spacing = 0;
       for (Json& op : *part) {
+        if (op["op"] == "LoopCut") spacing = 2.0 / (op["params"]["cuts"].get<double>() + 1);
         if (op["op"] != "EdgeLoopAffineScale") continue;
+        const Json& box = op["params"]["verts"]["box"];
         for (int axis = 0; axis < 3; ++axis) {
-          if (!op["params"]["verts"]["box"][0][axis].is_null()) op["params"]["scale"][axis] = 1.0;
+          if (box[0][axis].is_null()) continue;
+          if (box[1][axis].get<double>() - box[0][axis].get<double>() < spacing) op["params"]["scale"][axis] = 1.0;
         }
       }
     }
@@ -110,13 +119,16 @@ class Controller {
     best = ConsiderSmoothing(best);
     // Stages feed each other (a bend lets a profile help, a profile gives extrusions faces), so
     // they repeat until a whole pass changes nothing.
+    // Within a pass, proposals that add one op come before those that add several, so a
+    // simple explanation (a hole, a bend) is found before a profile imitates it.
     for (int pass = 0; pass < 3 && InBudget(); ++pass) {
       const double before = best.loss;
-      best = StageProfile(best);
-      best = StageDeforms(best);
       best = StageHoles(best);
+      best = StageDeforms(best);
       best = RepeatDetails(best);
+      best = StageProfile(best);
       best = StageGrid(best);
+      best = StageSlab(best);
       // Rounding comes after the extrusions, as a modeller would bevel: a bevel first would
       // round the cage toward a protrusion and split its faces below the extrusions' support.
       best = StageBevel(best);
@@ -162,7 +174,8 @@ class Controller {
     const std::string what = propose(&layout);
     if (what.empty()) return best;
     const Trial trial = Fit(layout, search_options_);
-    const int added = std::max(1, layout.NumOps() - best.layout.NumOps());
+    // A proposal that shortens the sequence may cost some loss: the same price per op.
+    const int added = layout.NumOps() - best.layout.NumOps();
     const bool accept = trial.ok && trial.loss < best.loss * std::pow(1.0 - options_.min_relative_gain, added);
     Log(stage, best, trial, accept, what);
     return accept ? trial : best;
@@ -198,6 +211,7 @@ class Controller {
     Trial rotated = FitPose(principal);
     if (aligned.ok && !(rotated.loss < 0.7 * aligned.loss)) {
       half_extent_ = aligned_half;
+      world_from_local_ = Eigen::Matrix3d::Identity();
       Log("affine", aligned, aligned, true, "Scale, Rotate, Translate (coordinate axes)");
       return aligned;
     }
@@ -205,13 +219,17 @@ class Controller {
     return rotated;
   }
 
-  Trial FitPose(const Eigen::Matrix3d& world_from_local) {
+  // The cube fitted onto the target's box in the frame `world_from_local`; along `slab_axis`
+  // (when >= 0) onto [slab_lo, slab_hi] instead.
+  Trial FitPose(const Eigen::Matrix3d& world_from_local, int slab_axis = -1, double slab_lo = 0, double slab_hi = 0) {
     const Positions<double>& points = target_.points();
     Vec3d lo = Vec3d::Constant(kInf), hi = Vec3d::Constant(-kInf);
     for (const Vec3d& p : points) {
       const Vec3d q = world_from_local.transpose() * p;
       lo = lo.cwiseMin(q), hi = hi.cwiseMax(q);
     }
+    if (slab_axis >= 0) lo[slab_axis] = slab_lo, hi[slab_axis] = slab_hi;
+    world_from_local_ = world_from_local;
     const double extent = (hi - lo).maxCoeff();
     const Vec3d half = ((hi - lo) / 2).cwiseMax(Vec3d::Constant(1e-3 * extent));
     // R = Rz Ry Rx: Eigen's eulerAngles(2, 1, 0) returns (z, y, x).
@@ -241,32 +259,49 @@ class Controller {
     return axis;
   }
 
-  // LoopCut along `axis` on the cube with an EdgeLoopAffineScale per new loop (`expect`: the
-  // loop's vertex count, < 0 when earlier cuts make it vary).
-  static std::vector<Json> LoopOps(int axis, int cuts, int expect) {
+  // LoopCut along `axis` on the cube with one EdgeLoopAffineScale per group of neighbouring new
+  // loops (`groups`: loop indices, each group contiguous; empty = one per loop). `expect`: a
+  // loop's vertex count, < 0 when earlier cuts make it vary.
+  static std::vector<Json> LoopOps(int axis, int cuts, int expect, std::vector<std::vector<int>> groups = {}) {
     std::vector<Json> ops = {MakeOp("LoopCut", {{"axis", kAxisNames[axis]}, {"cuts", cuts}, {"near", {0, 0, 0}}})};
+    if (groups.empty()) {
+      for (int i = 0; i < cuts; ++i) groups.push_back({i});
+    }
     const double spacing = 2.0 / (cuts + 1);
-    for (int i = 0; i < cuts; ++i) {
-      const double at = -1.0 + spacing * (i + 1);
+    for (const std::vector<int>& group : groups) {
       Json lo = {nullptr, nullptr, nullptr}, hi = {nullptr, nullptr, nullptr};
-      lo[axis] = at - 0.3 * spacing;
-      hi[axis] = at + 0.3 * spacing;
+      lo[axis] = -1.0 + spacing * (group.front() + 1) - 0.3 * spacing;
+      hi[axis] = -1.0 + spacing * (group.back() + 1) + 0.3 * spacing;
       Json verts = {{"box", {lo, hi}}};
-      if (expect > 0) verts["expect"] = expect;
+      if (expect > 0) verts["expect"] = expect * static_cast<int>(group.size());
       ops.push_back(MakeOp("EdgeLoopAffineScale", {{"verts", verts}, {"scale", {1.0, 1.0, 1.0}}}));
     }
     return ops;
   }
 
+  // Profiles along the long axis, simplest first: a waist or bulge (two loops scaled together),
+  // a pinch between two end sections (the inner two of four), the end loops apart, then one scale
+  // per loop. A richer profile replaces a simpler one only when it pays for its extra ops.
   Trial StageProfile(Trial best) {
     const int axis = LongAxis();
-    for (int cuts : {2, 4, 8}) {
+    struct Profile {
+      int cuts;
+      std::vector<std::vector<int>> groups;  // empty: one scale per loop
+      std::string name;
+    };
+    const std::vector<Profile> profiles = {{2, {{0, 1}}, "x2, the two loops scaled together"},
+                                           {4, {{1, 2}}, "x4, the inner two loops scaled together"},
+                                           {2, {}, "x2, each loop scaled"},
+                                           {4, {{0}, {1, 2}, {3}}, "x4, ends and middle scaled"},
+                                           {4, {}, "x4, each loop scaled"},
+                                           {8, {}, "x8, each loop scaled"}};
+    for (const Profile& profile : profiles) {
+      const std::string name = "LoopCut " + std::string(kAxisNames[axis]) + " " + profile.name;
+      if (!tried_profiles_.insert(name).second) continue;
       best = Consider("profile", best, [&](Layout* l) -> std::string {
-        const int loops_now = static_cast<int>(l->profile.size()) - 1;
-        if (loops_now >= cuts) return "";
-        l->profile = LoopOps(axis, cuts, 4);
-        return "LoopCut " + std::string(kAxisNames[axis]) + " x" + std::to_string(cuts) + " + " +
-               std::to_string(cuts) + " EdgeLoopAffineScale";
+        l->profile = LoopOps(axis, profile.cuts, 4, profile.groups);
+        l->profile_name = name;
+        return name;
       });
     }
     return best;
@@ -304,6 +339,7 @@ class Controller {
         // Deformations need rings along the long axis to bend smoothly.
         if (l->profile.empty()) {
           l->profile = {MakeOp("LoopCut", {{"axis", kAxisNames[axis]}, {"cuts", 7}, {"near", {0, 0, 0}}})};
+          l->profile_name = "LoopCut x7";
           what += " (with LoopCut " + std::string(kAxisNames[axis]) + " x7)";
         }
         return what;
@@ -315,7 +351,9 @@ class Controller {
   // Holes through the shape (a ring, a handle's eye): a Boolean difference with a prism or a box
   // through the centre along each axis; the fit sizes and places it.
   Trial StageHoles(Trial best) {
-    for (const char* primitive : {"prism8", "cube"}) {
+    // The prism also turned an eighth of a turn about its axis, so its flat sides face the
+    // cube's (sides parallel to the sides around them subdivide evenly).
+    for (const auto& [primitive, spin_deg] : {std::pair<const char*, double>{"prism8", 0.0}, {"prism8", 22.5}, {"cube", 0.0}}) {
       for (int axis = 0; axis < 3 && InBudget(); ++axis) {
         best = Consider("hole", best, [&](Layout* l) -> std::string {
           for (const Json& op : l->details) {
@@ -323,10 +361,13 @@ class Controller {
           }
           Vec3d size = half_extent_;  // half the extent across the axis, through it entirely
           size[axis] = 6 * half_extent_[axis];
-          // The prism's axis is +Z: turn it onto `axis`.
-          Vec3d rotation_deg = Vec3d::Zero();
-          if (axis == 0) rotation_deg.y() = 90;
-          if (axis == 1) rotation_deg.x() = 90;
+          // The prism's axis is +Z: spin it about that axis, then turn it onto `axis`.
+          Eigen::Matrix3d onto_axis = Eigen::Matrix3d::Identity();
+          if (axis == 0) onto_axis = Eigen::AngleAxisd(M_PI / 2, Vec3d::UnitY()).toRotationMatrix();
+          if (axis == 1) onto_axis = Eigen::AngleAxisd(M_PI / 2, Vec3d::UnitX()).toRotationMatrix();
+          const Eigen::Matrix3d world_from_primitive = onto_axis * Eigen::AngleAxisd(DegToRad(spin_deg), Vec3d::UnitZ()).toRotationMatrix();
+          const Vec3d zyx = world_from_primitive.eulerAngles(2, 1, 0);  // R = Rz Ry Rx
+          const Vec3d rotation_deg(RadToDeg(zyx[2]), RadToDeg(zyx[1]), RadToDeg(zyx[0]));
           Vec3d size_in_primitive = size;
           if (axis == 0) size_in_primitive = Vec3d(size.z(), size.y(), size.x());
           if (axis == 1) size_in_primitive = Vec3d(size.x(), size.z(), size.y());
@@ -335,7 +376,7 @@ class Controller {
                                                   {"size", ToJson(size_in_primitive)},
                                                   {"rotation_deg", ToJson(rotation_deg)},
                                                   {"location", {0.0, 0.0, 0.0}}}));
-          return std::string("+Boolean difference ") + primitive + " along " + kAxisNames[axis];
+          return std::string("+Boolean difference ") + primitive + (spin_deg != 0 ? " (turned)" : "") + " along " + kAxisNames[axis];
         });
       }
     }
@@ -349,10 +390,19 @@ class Controller {
       if (op["op"] == "Bevel") return best;
     }
     const double width = 0.05 * half_extent_.minCoeff();
+    const Json bevel = MakeOp("Bevel", {{"width", width}, {"segments", 5}, {"limit_method", "ANGLE"}, {"angle_limit_deg", 30.0}});
     best = Consider("bevel", best, [&](Layout* l) -> std::string {
-      l->details.push_back(MakeOp("Bevel", {{"width", width}, {"segments", 5}, {"limit_method", "ANGLE"}, {"angle_limit_deg", 30.0}}));
+      l->details.push_back(bevel);
       return "+Bevel (5 segments)";
     });
+    // Extrusions can imitate rounded edges (a slab's rim grown outward): a bevel alone may
+    // explain them with fewer ops.
+    if (!best.layout.details.empty() && best.layout.details.back()["op"] != "Bevel") {
+      best = Consider("bevel", best, [&](Layout* l) -> std::string {
+        l->details = {MakeOp("Bevel", {{"width", 4 * width}, {"segments", 5}, {"limit_method", "ANGLE"}, {"angle_limit_deg", 30.0}})};
+        return "Bevel (5 segments) instead of the extrusions";
+      });
+    }
     if (best.layout.details.empty() || best.layout.details.back()["op"] != "Bevel") return best;
     for (int segments : {1, 2, 3, 4, 6, 9}) {
       if (!InBudget()) break;
@@ -383,9 +433,10 @@ class Controller {
     for (int a = 0; a < 3 && InBudget(); ++a) {
       for (int b = a + 1; b < 3 && InBudget(); ++b) {
         Layout layout = best.layout;
-        // Loop scales let the new faces move to where the extrusions belong (a leg at a corner).
-        layout.grid = LoopOps(a, 2, layout.profile.empty() ? 4 : -1);
-        const std::vector<Json> second = LoopOps(b, 2, -1);
+        // A scale of both loops of an axis spaces them, so the new faces move to where the
+        // extrusions belong (a leg at a corner).
+        layout.grid = LoopOps(a, 2, layout.profile.empty() ? 4 : -1, {{0, 1}});
+        const std::vector<Json> second = LoopOps(b, 2, -1, {{0, 1}});
         layout.grid.insert(layout.grid.end(), second.begin(), second.end());
         Trial trial = Fit(layout, search_options_);
         if (!trial.ok) continue;
@@ -398,6 +449,82 @@ class Controller {
         if (accept) best = trial;
       }
     }
+    return best;
+  }
+
+  // The body of a table or a stool: along some axis, the largest layer of the target's surface
+  // facing + and the largest facing - bound a slab clearly thinner than the bounding box, and
+  // the rest grows out of it. Returns the axis (-1 when none) and the slab's bounds, in the
+  // frame of the global affine fit.
+  std::tuple<int, double, double> FindSlab() const {
+    const Positions<double>& points = target_.points();
+    const Positions<double>& normals = target_.normals();
+    constexpr int kBins = 100;
+    int best_axis = -1;
+    double best_weight = 0, best_lo = 0, best_hi = 0;
+    for (int axis = 0; axis < 3; ++axis) {
+      double lo = kInf, hi = -kInf;
+      for (const Vec3d& p : points) {
+        const double x = world_from_local_.col(axis).dot(p);
+        lo = std::min(lo, x), hi = std::max(hi, x);
+      }
+      if (!(hi - lo > 0)) continue;
+      std::vector<double> plus(kBins, 0), minus(kBins, 0);
+      for (size_t i = 0; i < points.size(); ++i) {
+        const int bin = std::clamp(static_cast<int>((world_from_local_.col(axis).dot(points[i]) - lo) / (hi - lo) * kBins), 0, kBins - 1);
+        const double facing = world_from_local_.col(axis).dot(normals[i]);
+        if (facing > 0.9) plus[bin] += 1;
+        if (facing < -0.9) minus[bin] += 1;
+      }
+      // Layers of three bins, so a layer on a bin boundary counts whole.
+      auto densest = [&](const std::vector<double>& count) {
+        int best = 0;
+        double weight = 0;
+        for (int b = 0; b < kBins; ++b) {
+          const double w = count[b] + (b > 0 ? count[b - 1] : 0) + (b + 1 < kBins ? count[b + 1] : 0);
+          if (w > weight) weight = w, best = b;
+        }
+        return std::make_pair(best, weight);
+      };
+      const auto [top, top_weight] = densest(plus);
+      const auto [bottom, bottom_weight] = densest(minus);
+      const double n = static_cast<double>(points.size());
+      // A slab: thinner than 60% of the box, both layers holding 5% of the samples.
+      if (bottom >= top || top - bottom > 0.6 * kBins || std::min(top_weight, bottom_weight) < 0.05 * n) continue;
+      if (top_weight + bottom_weight > best_weight) {
+        best_axis = axis, best_weight = top_weight + bottom_weight;
+        best_lo = lo + (bottom + 0.5) / kBins * (hi - lo);
+        best_hi = lo + (top + 0.5) / kBins * (hi - lo);
+      }
+    }
+    return {best_axis, best_lo, best_hi};
+  }
+
+  // A slab as the body (see FindSlab) with a loop-cut grid across it and the extrusions that
+  // grow the rest (a table's legs), judged against the best sequence as a whole.
+  Trial StageSlab(Trial best) {
+    if (slab_tried_ || !InBudget()) return best;
+    slab_tried_ = true;
+    const auto [axis, lo, hi] = FindSlab();
+    if (axis < 0) return best;
+    const Vec3d half_extent = half_extent_;
+    Trial trial = FitPose(world_from_local_, axis, lo, hi);
+    const int a = (axis + 1) % 3, b = (axis + 2) % 3;
+    Layout layout = trial.layout;
+    layout.grid = LoopOps(std::min(a, b), 2, 4, {{0, 1}});
+    const std::vector<Json> second = LoopOps(std::max(a, b), 2, -1, {{0, 1}});
+    layout.grid.insert(layout.grid.end(), second.begin(), second.end());
+    trial = Fit(layout, search_options_);
+    const std::string what = std::string("slab across ") + kAxisNames[axis] + " with a LoopCut grid";
+    if (trial.ok) {
+      Log("slab", best, trial, false, what + " (before its extrusions)");
+      trial = RepeatDetails(trial);
+    }
+    const int added = trial.layout.NumOps() - best.layout.NumOps();
+    const bool accept = trial.ok && trial.loss < best.loss * std::pow(1.0 - options_.min_relative_gain, added);
+    Log("slab", best, trial, accept, what + " and its extrusions");
+    if (accept) return trial;
+    half_extent_ = half_extent;
     return best;
   }
 
@@ -549,6 +676,34 @@ class Controller {
     return document;
   }
 
+  // The document with the scale moved first (as modellers order it) when it builds the same
+  // mesh: equal counts and every vertex on one of the original's. (A loop cut's seed edge can
+  // be another edge of the same ring after the scale, which only reorders the new vertices.)
+  Json ScaleFirstIfSame(const Json& document) {
+    const Json reordered = ScaleFirst(document);
+    if (reordered == document) return document;
+    try {
+      Sequence original_sequence = ParseSequence(document), reordered_sequence = ParseSequence(reordered);
+      const Mesh original = EvaluateSequence(&original_sequence).back();
+      const Mesh moved = EvaluateSequence(&reordered_sequence).back();
+      if (moved.NumVertices() != original.NumVertices() || moved.NumFaces() != original.NumFaces()) return document;
+      const double tolerance = 1e-9 * (2.0 * half_extent_.norm() + 1.0);
+      for (const Vec3d& p : moved.vertices) {
+        bool found = false;
+        for (const Vec3d& q : original.vertices) {
+          if ((p - q).squaredNorm() <= tolerance * tolerance) {
+            found = true;
+            break;
+          }
+        }
+        if (!found) return document;
+      }
+      return reordered;
+    } catch (const std::exception&) {
+      return document;
+    }
+  }
+
   ZeroShotResult Finish(const Trial& best) {
     // Gates: ops that do not earn their place are pruned, then a polishing fit.
     Sequence sequence = ParseSequence(best.layout.Document());
@@ -580,6 +735,7 @@ class Controller {
       if (polished.ok) document = polished.layout.Document(), loss = polished.loss;
     }
     document = Simplify(document);
+    document = ScaleFirstIfSame(document);
     ZeroShotResult result;
     result.sequence = document;
     result.loss = loss;
@@ -599,8 +755,11 @@ class Controller {
   FitterOptions final_options_;
   Clock::time_point start_;
   Vec3d half_extent_ = Vec3d::Ones();
+  Eigen::Matrix3d world_from_local_ = Eigen::Matrix3d::Identity();  // of the global affine fit
+  bool slab_tried_ = false;
   int num_fits_ = 0;
   std::vector<std::string> decisions_;
+  std::set<std::string> tried_profiles_;
 };
 
 }  // namespace

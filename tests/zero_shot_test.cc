@@ -11,6 +11,7 @@
 #include <fstream>
 
 #include "core/metrics.h"
+#include "core/sequence_similarity.h"
 #include "core/obj_io.h"
 #include "ops/sequence.h"
 
@@ -70,6 +71,60 @@ TEST(ZeroShot, RecoversShapesBuiltByKnownSequences) {
     EXPECT_LT(metrics.chamfer.Sum(), 0.03) << shape[0];
   }
   EXPECT_GE(good, 3);
+}
+
+// Shapes a modeller makes in a few ops: the controller should find a history of the same kind
+// (op names compared by normalised LCS, the paper's sequence metric), not only the shape.
+const char* const kModellerShapes[][2] = {
+    {"rounded_box", R"({"operations": [
+        {"op": "GlobalAffineScale", "params": {"scale": [1.2, 0.8, 0.5]}},
+        {"op": "Bevel", "params": {"width": 0.15, "segments": 4, "limit_method": "NONE"}},
+        {"op": "GlobalAffineRotate", "params": {"rotation_deg": [0, 0, 30]}},
+        {"op": "GlobalAffineTranslate", "params": {"offset": [3, 1, -2]}}]})"},
+    {"pinched_post", R"({"operations": [
+        {"op": "GlobalAffineScale", "params": {"scale": [0.5, 0.5, 1.8]}},
+        {"op": "LoopCut", "params": {"axis": "Z", "cuts": 4, "near": [0, 0, 0]}},
+        {"op": "EdgeLoopAffineScale", "params": {"verts": {"box": [[null, null, -0.7], [null, null, 0.7]], "expect": 8},
+                                                 "scale": [0.5, 0.5, 1]}},
+        {"op": "Subdivision", "params": {"levels": 2}}]})"},
+    {"bench", R"({"operations": [
+        {"op": "GlobalAffineScale", "params": {"scale": [1.5, 0.6, 0.1]}},
+        {"op": "LoopCut", "params": {"axis": "X", "cuts": 2, "near": [0, 0, 0]}},
+        {"op": "EdgeLoopAffineScale", "params": {"verts": {"box": [[-1, null, null], [1, null, null]], "expect": 8},
+                                                 "scale": [2.4, 1, 1]}},
+        {"op": "LoopCut", "params": {"axis": "Y", "cuts": 2, "near": [0, 0, 0]}},
+        {"op": "EdgeLoopAffineScale", "params": {"verts": {"box": [[null, -0.5, null], [null, 0.5, null]], "expect": 16},
+                                                 "scale": [1, 2.2, 1]}},
+        {"op": "Extrude", "params": {"faces": {"normal": [0, 0, -1], "centers": [[1.35, 0.5, -0.1], [-1.35, 0.5, -0.1],
+                                    [1.35, -0.5, -0.1], [-1.35, -0.5, -0.1]], "expect": 4}, "height": 0.9, "mode": "individual"}}]})"},
+};
+
+std::vector<std::string> OpNames(const Json& document) {
+  std::vector<std::string> names;
+  for (const Json& op : document.at("operations")) names.push_back(op.at("op"));
+  return names;
+}
+
+TEST(ZeroShot, FindsAModellersKindOfSequence) {
+  double similarity_sum = 0;
+  for (const auto& shape : kModellerShapes) {
+    const Mesh target_mesh = BuildMesh(shape[1]);
+    Target target(target_mesh, {}, TargetOptions());
+    ZeroShotOptions options;
+    options.time_budget_seconds = 30;
+    const ZeroShotResult result = RecoverSequence(target, options);
+    Sequence sequence = ParseSequence(result.sequence);
+    const ShapeMetrics metrics = ComputeShapeMetrics(EvaluateSequence(&sequence).back(), target_mesh);
+    const std::vector<std::string> found = OpNames(result.sequence), truth = OpNames(Json::parse(shape[1]));
+    const double similarity = NormalizedLcsSimilarity(found, truth);
+    std::string names;
+    for (const std::string& name : found) names += " " + name;
+    std::cout << "[zero-shot] " << shape[0] << ": Chamfer " << metrics.chamfer.Sum() << ", LCS " << similarity << ":"
+              << names << "\n";
+    EXPECT_LT(metrics.chamfer.Sum(), 0.01) << shape[0];
+    similarity_sum += similarity;
+  }
+  EXPECT_GE(similarity_sum / std::size(kModellerShapes), 0.6);
 }
 
 TEST(ZeroShot, DeterministicForASeed) {
