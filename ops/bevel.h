@@ -4,7 +4,9 @@
 // loop_slide on, miter_outer SHARP, clamp_overlap on, harden normals off. Beveled edges:
 // limit_method NONE (every manifold edge) or ANGLE (edges whose faces' normals differ by more
 // than `angle_limit_deg`). The geometry follows bmesh_bevel.c: boundary vertices by offset_meet
-// / offset_on_edge_between (with the loop-slide width adjustment), profiles, and vertex meshes
+// / offset_on_edge_between (with the loop-slide width adjustment; a lone un-beveled edge between
+// two beveled ones is slid on unless it is within bevel::kGoodAngle = 1e-4 rad of collinear with
+// either, as in Blender 3.4), profiles, and vertex meshes
 // (two beveled edges: welded profiles; three or more: the cube-corner octant map when Blender
 // uses it, else its cubic-subdivision vertex mesh; one segment: a polygon).
 //

@@ -20,7 +20,7 @@ constexpr double kEpsilon = 1e-6;
 constexpr double kEpsilonBig = 1e-4;
 constexpr double kEpsilonAng = 2.0 * kPi / 180.0;   // BEVEL_EPSILON_ANG
 constexpr double kSmallAng = 10.0 * kPi / 180.0;    // BEVEL_SMALL_ANG
-constexpr double kGoodAngle = 0.25;                 // BEVEL_GOOD_ANGLE
+constexpr double kGoodAngle = 0.0001;               // Blender 3.4's BEVEL_GOOD_ANGLE (older: 0.25, newer: 0.1)
 
 template <typename T>
 using V3 = Vec3<T>;
