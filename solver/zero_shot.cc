@@ -5,6 +5,7 @@
 #include <algorithm>
 #include <chrono>
 #include <cmath>
+#include <functional>
 #include <limits>
 #include <ostream>
 #include <set>
@@ -32,21 +33,26 @@ struct Layout {
   std::string profile_name;   // which profile proposal `profile` is, empty when none
   std::vector<Json> grid;     // then: loop cuts across the other axes, loop scales
   Json scale, rotate, translate;
+  std::vector<Json> ridge;    // after the scale: a loop cut with its top vertices raised
   std::vector<Json> deforms;
   std::vector<Json> details;  // extrusions (and their insets)
   bool subdivide = false;
 
   int NumOps() const {
-    return static_cast<int>(profile.size() + grid.size() + deforms.size() + details.size()) + 3 + (subdivide ? 1 : 0);
+    return static_cast<int>(profile.size() + grid.size() + ridge.size() + deforms.size() + details.size()) + 3 +
+           (subdivide ? 1 : 0);
   }
   // Index of the last op before Subdivision / Rotate: the step whose mesh is the cage.
-  int CageStep() const { return static_cast<int>(profile.size() + grid.size() + deforms.size() + details.size()); }
+  int CageStep() const {
+    return static_cast<int>(profile.size() + grid.size() + ridge.size() + deforms.size() + details.size());
+  }
 
   Json Document() const {
     Json ops = Json::array();
     for (const Json& op : profile) ops.push_back(op);
     for (const Json& op : grid) ops.push_back(op);
     ops.push_back(scale);
+    for (const Json& op : ridge) ops.push_back(op);
     for (const Json& op : deforms) ops.push_back(op);
     for (const Json& op : details) ops.push_back(op);
     if (subdivide) ops.push_back(MakeOp("Subdivision", {{"levels", 2}}));
@@ -79,6 +85,7 @@ struct Layout {
       }
     }
     out.scale = ops[i++];
+    for (Json& op : out.ridge) op = ops[i++];
     for (Json& op : out.deforms) op = ops[i++];
     for (Json& op : out.details) op = ops[i++];
     if (subdivide) ++i;
@@ -125,6 +132,7 @@ class Controller {
       const double before = best.loss;
       best = StageHoles(best);
       best = StageDeforms(best);
+      best = StageRidge(best);
       best = RepeatDetails(best);
       best = StageProfile(best);
       best = StageGrid(best);
@@ -142,7 +150,11 @@ class Controller {
   // Proposals stop at this share of the budget; the finishing fits (gate pruning, polishing,
   // simplification: 20-40 s on a 20-op sequence) take the rest.
   static constexpr double kSearchShare = 0.65;
-  bool InBudget() const { return Seconds() < kSearchShare * options_.time_budget_seconds; }
+  bool InBudget() const {
+    const bool in_budget = Seconds() < kSearchShare * options_.time_budget_seconds;
+    budget_ended_search_ = budget_ended_search_ || !in_budget;
+    return in_budget;
+  }
   double Seconds() const { return std::chrono::duration<double>(Clock::now() - start_).count(); }
 
   Trial Fit(const Layout& layout, const FitterOptions& options) {
@@ -165,20 +177,36 @@ class Controller {
     return trial;
   }
 
+  using Proposal = std::function<std::string(Layout*)>;
+
   // Fits `propose`'s change of `best`; keeps it when the loss falls by more than the price of
   // the ops it adds.
-  template <typename Propose>
-  Trial Consider(const std::string& stage, const Trial& best, Propose propose) {
-    if (!InBudget()) return best;
-    Layout layout = best.layout;
-    const std::string what = propose(&layout);
-    if (what.empty()) return best;
-    const Trial trial = Fit(layout, search_options_);
-    // A proposal that shortens the sequence may cost some loss: the same price per op.
-    const int added = layout.NumOps() - best.layout.NumOps();
-    const bool accept = trial.ok && trial.loss < best.loss * std::pow(1.0 - options_.min_relative_gain, added);
-    Log(stage, best, trial, accept, what);
-    return accept ? trial : best;
+  Trial Consider(const std::string& stage, const Trial& best, const Proposal& propose) {
+    return ConsiderBest(stage, best, {propose});
+  }
+
+  // Fits each alternative change of `best` and keeps the one whose loss, divided by the price
+  // of the ops it adds, is lowest, if that is below the loss of `best`. A proposal that
+  // shortens the sequence may cost some loss: the same price per op.
+  Trial ConsiderBest(const std::string& stage, const Trial& best, const std::vector<Proposal>& alternatives) {
+    Trial chosen = best;
+    double chosen_score = best.loss;
+    std::string chosen_what;
+    for (const Proposal& propose : alternatives) {
+      if (!InBudget()) break;
+      Layout layout = best.layout;
+      const std::string what = propose(&layout);
+      if (what.empty()) continue;
+      const Trial trial = Fit(layout, search_options_);
+      const int added = layout.NumOps() - best.layout.NumOps();
+      const double score = trial.ok ? trial.loss / std::pow(1.0 - options_.min_relative_gain, added) : kInf;
+      const bool better = score < chosen_score;
+      if (alternatives.size() > 1 && !better) Log(stage, best, trial, false, what);
+      if (better) chosen = trial, chosen_score = score, chosen_what = what;
+      if (alternatives.size() == 1 && !better) Log(stage, best, trial, false, what);
+    }
+    if (!chosen_what.empty()) Log(stage, best, chosen, true, chosen_what);
+    return chosen;
   }
 
   void Log(const std::string& stage, const Trial& before, const Trial& after, bool accepted, const std::string& what) {
@@ -202,10 +230,9 @@ class Controller {
     Eigen::Matrix3d covariance = Eigen::Matrix3d::Zero();
     for (const Vec3d& p : points) covariance += (p - mean) * (p - mean).transpose();
     Eigen::SelfAdjointEigenSolver<Eigen::Matrix3d> eigen(covariance);
-    Eigen::Matrix3d principal = eigen.eigenvectors();
-    if (principal.determinant() < 0) principal.col(2) *= -1;
-    // Models are often built axis-aligned, and principal axes of (near) equal variance are
-    // arbitrary: the coordinate axes are tried too, and kept unless clearly worse.
+    Eigen::Matrix3d principal = PrincipalFrame(eigen.eigenvalues(), eigen.eigenvectors(), mean);
+    // Models are often built axis-aligned: the coordinate axes are tried too, and kept unless
+    // clearly worse.
     Trial aligned = FitPose(Eigen::Matrix3d::Identity());
     const Vec3d aligned_half = half_extent_;
     Trial rotated = FitPose(principal);
@@ -219,9 +246,42 @@ class Controller {
     return rotated;
   }
 
-  // The cube fitted onto the target's box in the frame `world_from_local`; along `slab_axis`
-  // (when >= 0) onto [slab_lo, slab_hi] instead.
-  Trial FitPose(const Eigen::Matrix3d& world_from_local, int slab_axis = -1, double slab_lo = 0, double slab_hi = 0) {
+  // A frame of principal axes (columns, right-handed). Axes of (near) equal variance are
+  // arbitrary (a plus sign, a square plate, a cylinder): when two are, the pair is turned about
+  // the third axis to the smallest bounding rectangle (a plus sign's arms, a plate's sides);
+  // when all three are, the coordinate axes are used.
+  Eigen::Matrix3d PrincipalFrame(const Vec3d& variances, const Eigen::Matrix3d& axes, const Vec3d& mean) const {
+    auto near_equal = [&](int a, int b) { return std::abs(variances[a] - variances[b]) < 0.15 * std::max(variances[a], variances[b]); };
+    Eigen::Matrix3d frame = axes;
+    if (near_equal(0, 1) && near_equal(1, 2)) return Eigen::Matrix3d::Identity();
+    if (near_equal(0, 1) || near_equal(1, 2)) {
+      const int distinct = near_equal(0, 1) ? 2 : 0;
+      const Vec3d e1 = axes.col((distinct + 1) % 3), e2 = axes.col((distinct + 2) % 3);
+      const Positions<double>& points = target_.points();
+      const size_t stride = std::max<size_t>(1, points.size() / 5000);
+      double best_area = kInf;
+      for (int step = 0; step < 180; ++step) {
+        const double angle = DegToRad(0.5 * step);
+        const Vec3d a = std::cos(angle) * e1 + std::sin(angle) * e2, b = -std::sin(angle) * e1 + std::cos(angle) * e2;
+        double a_lo = kInf, a_hi = -kInf, b_lo = kInf, b_hi = -kInf;
+        for (size_t i = 0; i < points.size(); i += stride) {
+          const double x = a.dot(points[i] - mean), y = b.dot(points[i] - mean);
+          a_lo = std::min(a_lo, x), a_hi = std::max(a_hi, x), b_lo = std::min(b_lo, y), b_hi = std::max(b_hi, y);
+        }
+        const double area = (a_hi - a_lo) * (b_hi - b_lo);
+        if (area < best_area) best_area = area, frame.col((distinct + 1) % 3) = a, frame.col((distinct + 2) % 3) = b;
+      }
+    }
+    if (frame.determinant() < 0) frame.col(2) *= -1;
+    return frame;
+  }
+
+  // The cube fitted onto the target's box in the frame `world_from_local`.
+  Trial FitPose(const Eigen::Matrix3d& world_from_local) { return Fit(PoseLayout(world_from_local), search_options_); }
+
+  // The cube placed on the target's box in the frame `world_from_local`; along `slab_axis`
+  // (when >= 0) on [slab_lo, slab_hi] instead.
+  Layout PoseLayout(const Eigen::Matrix3d& world_from_local, int slab_axis = -1, double slab_lo = 0, double slab_hi = 0) {
     const Positions<double>& points = target_.points();
     Vec3d lo = Vec3d::Constant(kInf), hi = Vec3d::Constant(-kInf);
     for (const Vec3d& p : points) {
@@ -240,7 +300,7 @@ class Controller {
                            {{"rotation_deg", ToJson(Vec3d(RadToDeg(zyx[2]), RadToDeg(zyx[1]), RadToDeg(zyx[0])))}});
     layout.translate = MakeOp("GlobalAffineTranslate", {{"offset", ToJson(Vec3d(world_from_local * ((hi + lo) / 2)))}});
     half_extent_ = half;
-    return Fit(layout, search_options_);
+    return layout;
   }
 
   Trial ConsiderSmoothing(const Trial& best) {
@@ -348,6 +408,41 @@ class Controller {
     return best;
   }
 
+  // A ridge or a peak (a gable roof): a loop cut across one axis, and the cut's vertices on one
+  // side of another axis raised along it. Every axis pair and side is fitted; the best one is
+  // kept if it pays for its two ops.
+  Trial StageRidge(Trial best) {
+    if (!best.layout.ridge.empty() || !InBudget()) return best;
+    const Json& scale = best.layout.scale["params"]["scale"];
+    Trial best_ridge;
+    std::string best_what;
+    for (int cut = 0; cut < 3; ++cut) {
+      for (int up = 0; up < 3; ++up) {
+        for (int sign : {1, -1}) {
+          if (up == cut || !InBudget()) continue;
+          const double cut_half = std::abs(scale[cut].get<double>()), up_half = std::abs(scale[up].get<double>());
+          Json lo = {nullptr, nullptr, nullptr}, hi = {nullptr, nullptr, nullptr};
+          lo[cut] = -0.25 * cut_half, hi[cut] = 0.25 * cut_half;
+          (sign > 0 ? lo : hi)[up] = sign * 0.5 * up_half;
+          Vec3d offset = Vec3d::Zero();
+          offset[up] = sign * 0.5 * up_half;
+          Layout layout = best.layout;
+          layout.ridge = {MakeOp("LoopCut", {{"axis", kAxisNames[cut]}, {"cuts", 1}, {"near", {0, 0, 0}}}),
+                          MakeOp("VertexDisplace", {{"groups", Json::array({Json{{"verts", {{"box", {lo, hi}}}}, {"offset", ToJson(offset)}}})}})};
+          const Trial trial = Fit(layout, search_options_);
+          if (trial.ok && (!best_ridge.ok || trial.loss < best_ridge.loss)) {
+            best_ridge = trial;
+            best_what = std::string("LoopCut ") + kAxisNames[cut] + " x1, its vertices raised along " + (sign > 0 ? "+" : "-") + kAxisNames[up];
+          }
+        }
+      }
+    }
+    if (!best_ridge.ok) return best;
+    const bool accept = best_ridge.loss < best.loss * std::pow(1.0 - options_.min_relative_gain, 2);
+    Log("ridge", best, best_ridge, accept, best_what);
+    return accept ? best_ridge : best;
+  }
+
   // Holes through the shape (a ring, a handle's eye): a Boolean difference with a prism or a box
   // through the centre along each axis; the fit sizes and places it.
   Trial StageHoles(Trial best) {
@@ -400,6 +495,7 @@ class Controller {
     if (!best.layout.details.empty() && best.layout.details.back()["op"] != "Bevel") {
       best = Consider("bevel", best, [&](Layout* l) -> std::string {
         l->details = {MakeOp("Bevel", {{"width", 4 * width}, {"segments", 5}, {"limit_method", "ANGLE"}, {"angle_limit_deg", 30.0}})};
+        l->grid.clear();  // the grid was there for the extrusions
         return "Bevel (5 segments) instead of the extrusions";
       });
     }
@@ -442,9 +538,13 @@ class Controller {
         if (!trial.ok) continue;
         const std::string what = std::string("LoopCut grid ") + kAxisNames[a] + kAxisNames[b];
         Log("grid", best, trial, false, what + " (before its extrusions)");
+        const size_t details_before = trial.layout.details.size();
         trial = RepeatDetails(trial);
         const int added = trial.layout.NumOps() - best.layout.NumOps();
-        const bool accept = trial.loss < best.loss * std::pow(1.0 - options_.min_relative_gain, added);
+        // A grid is there for its extrusions: without any, its loop scales would only be a
+        // second profile.
+        const bool accept = trial.layout.details.size() > details_before &&
+                            trial.loss < best.loss * std::pow(1.0 - options_.min_relative_gain, added);
         Log("grid", best, trial, accept, what + " with its extrusions");
         if (accept) best = trial;
       }
@@ -508,18 +608,18 @@ class Controller {
     const auto [axis, lo, hi] = FindSlab();
     if (axis < 0) return best;
     const Vec3d half_extent = half_extent_;
-    Trial trial = FitPose(world_from_local_, axis, lo, hi);
+    // The slab is not fitted alone: the rest of the target would pull it back to the bounding
+    // box. Its extrusions are proposed from the placed slab and fitted with it.
+    Trial trial;
+    trial.layout = PoseLayout(world_from_local_, axis, lo, hi);
     const int a = (axis + 1) % 3, b = (axis + 2) % 3;
-    Layout layout = trial.layout;
-    layout.grid = LoopOps(std::min(a, b), 2, 4, {{0, 1}});
+    trial.layout.grid = LoopOps(std::min(a, b), 2, 4, {{0, 1}});
     const std::vector<Json> second = LoopOps(std::max(a, b), 2, -1, {{0, 1}});
-    layout.grid.insert(layout.grid.end(), second.begin(), second.end());
-    trial = Fit(layout, search_options_);
+    trial.layout.grid.insert(trial.layout.grid.end(), second.begin(), second.end());
+    trial.ok = true;  // with an unknown (infinite) loss, so its first extrusions are taken
     const std::string what = std::string("slab across ") + kAxisNames[axis] + " with a LoopCut grid";
-    if (trial.ok) {
-      Log("slab", best, trial, false, what + " (before its extrusions)");
-      trial = RepeatDetails(trial);
-    }
+    trial = RepeatDetails(trial);
+    trial.ok = std::isfinite(trial.loss);
     const int added = trial.layout.NumOps() - best.layout.NumOps();
     const bool accept = trial.ok && trial.loss < best.loss * std::pow(1.0 - options_.min_relative_gain, added);
     Log("slab", best, trial, accept, what + " and its extrusions");
@@ -615,30 +715,40 @@ class Controller {
     }
     for (size_t i = 0; i < candidates.size() && i < 6; ++i) proposals.push_back({candidates[i]});
     for (const std::vector<Candidate>& group : proposals) {
-      best = Consider("detail", best, [&](Layout* l) -> std::string {
-        Json centers = Json::array();
-        double height = 0, width = 0;
-        for (const Candidate& c : group) {
-          centers.push_back(ToJson(centroids[c.face]));
-          height += c.height / static_cast<double>(group.size());
-          width += c.width / static_cast<double>(group.size());
-        }
-        Json faces = {{"centers", centers}, {"expect", group.size()}};
-        // A shared normal keeps the selector on the same faces when an edit moves their centres.
-        bool shared_normal = true;
-        for (const Candidate& c : group) shared_normal = shared_normal && normals[c.face].dot(normals[group[0].face]) > 0.99;
-        if (shared_normal) faces["normal"] = ToJson(normals[group[0].face]), faces["min_dot"] = 0.9;
-        const std::string count = group.size() > 1 ? " x" + std::to_string(group.size()) : "";
-        if (height > 0) {
-          l->details.push_back(
-              MakeOp("Extrude", {{"faces", faces}, {"height", height}, {"width", width}, {"mode", "individual"}}));
+      Json centers = Json::array();
+      double height = 0, width = 0, side = 0;
+      for (const Candidate& c : group) {
+        centers.push_back(ToJson(centroids[c.face]));
+        height += c.height / static_cast<double>(group.size());
+        width += c.width / static_cast<double>(group.size());
+        side += std::sqrt(FaceAreaNormal(cage.vertices, cage.faces[c.face]).norm()) / static_cast<double>(group.size());
+      }
+      Json faces = {{"centers", centers}, {"expect", group.size()}};
+      // A shared normal keeps the selector on the same faces when an edit moves their centres.
+      bool shared_normal = true;
+      for (const Candidate& c : group) shared_normal = shared_normal && normals[c.face].dot(normals[group[0].face]) > 0.99;
+      if (shared_normal) faces["normal"] = ToJson(normals[group[0].face]), faces["min_dot"] = 0.9;
+      const std::string count = group.size() > 1 ? " x" + std::to_string(group.size()) : "";
+      // A narrower protrusion or a hole with a rim: the cap narrowed (a tapered wall), or the
+      // faces inset first and the inner faces extruded (a straight wall, as a modeller does).
+      const double inset_width = height > 0 ? width : 0.7;
+      std::vector<Proposal> alternatives;
+      if (height > 0) {
+        alternatives.push_back([&](Layout* l) -> std::string {
+          l->details.push_back(MakeOp("Extrude", {{"faces", faces}, {"height", height}, {"width", width}, {"mode", "individual"}}));
           return "+Extrude out" + count + " " + std::to_string(height) + " width " + std::to_string(width);
-        }
-        // A cavity: the faces pushed in, each through a narrowed cap (a hole with a rim).
-        l->details.push_back(
-            MakeOp("Extrude", {{"faces", faces}, {"height", height}, {"width", 0.7}, {"mode", "individual"}}));
-        return "+Extrude in" + count + " " + std::to_string(height);
-      });
+        });
+      }
+      if (inset_width < 0.8) {
+        alternatives.push_back([&](Layout* l) -> std::string {
+          const double thickness = 0.5 * (1 - inset_width) * side;
+          l->details.push_back(MakeOp("Inset", {{"faces", faces}, {"thickness", thickness}}));
+          l->details.push_back(MakeOp("Extrude", {{"faces", faces}, {"height", height}, {"mode", "individual"}}));
+          return "+Inset " + std::to_string(thickness) + ", Extrude " + (height > 0 ? "out" : "in") + count + " " +
+                 std::to_string(height);
+        });
+      }
+      best = ConsiderBest("detail", best, alternatives);
     }
     return best;
   }
@@ -742,6 +852,7 @@ class Controller {
     result.num_fits = num_fits_;
     result.seconds = Seconds();
     result.decisions = decisions_;
+    result.search_complete = !budget_ended_search_;
     if (options_.progress != nullptr) {
       *options_.progress << "[zero-shot] final: " << document["operations"].size() << " ops, loss " << loss << ", "
                          << num_fits_ << " fits, " << result.seconds << " s" << std::endl;
@@ -757,6 +868,7 @@ class Controller {
   Vec3d half_extent_ = Vec3d::Ones();
   Eigen::Matrix3d world_from_local_ = Eigen::Matrix3d::Identity();  // of the global affine fit
   bool slab_tried_ = false;
+  mutable bool budget_ended_search_ = false;  // a proposal was skipped for lack of time
   int num_fits_ = 0;
   std::vector<std::string> decisions_;
   std::set<std::string> tried_profiles_;

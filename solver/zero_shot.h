@@ -1,17 +1,18 @@
 // Zero-shot recovery of a design sequence: the outer combinatorial controller around the
-// Ceres fits. It stages discrete decisions (propose, fit, accept or reject, expand):
-//   1. global affine: a cube scaled, rotated and translated onto the target (principal axes);
+// Ceres fits. It stages discrete decisions (propose, fit, accept or reject, expand), simplest
+// first, as a modeller builds (docs/zero-shot.md has the details):
+//   1. global affine: a cube scaled, rotated and translated onto the target;
 //   2. smoothness: Subdivision (level 2) at the end of the structure, kept if it helps;
-//   3. profile: LoopCut along the longest axis with an EdgeLoopAffineScale per loop;
-//   4. deformations: SimpleDeform Twist, Taper and Bend along that axis;
-//   5. protrusions and cavities: Extrude on the faces where the target lies farthest outside
-//      (or inside) the current cage, found from the residuals;
-//   6. pruning: op gates fitted with the sparsity stage, ops below the threshold removed,
-//      then a polishing fit.
-// A proposal is accepted when the data loss falls by more than `min_relative_gain`, which is
-// the price of a longer sequence. Ops act in the cube's own frame (cube -> loop cuts ->
-// Scale -> deformations -> extrusions -> Subdivision -> Rotate -> Translate), so element
-// selectors stay valid while the fit moves the global pose.
+//   3. repeated passes of: holes (Boolean difference), deformations (SimpleDeform), a ridge
+//      (loop cut with raised vertices), protrusions and cavities (Extrude, or Inset then
+//      Extrude, on faces found from the residuals), profiles (LoopCut with loop scales), a
+//      loop-cut grid or a slab body with the extrusions they enable, Bevel, Subdivision;
+//   4. pruning: op gates fitted with the sparsity stage, ops below the threshold removed, a
+//      polishing fit, ops the Chamfer distance does not need dropped, the scale written first.
+// A proposal is accepted when the data loss falls by more than `min_relative_gain` per op it
+// adds, the price of a longer sequence. During the search ops act in the cube's own frame
+// (cube -> loop cuts -> Scale -> ridge -> deformations -> details -> Subdivision -> Rotate ->
+// Translate), so element selectors stay valid while the fit moves the global pose.
 #pragma once
 
 #include <cstdint>
@@ -48,6 +49,7 @@ struct ZeroShotResult {
   int num_fits = 0;      // Ceres (or Adam) fits run
   double seconds = 0;
   std::vector<std::string> decisions;  // one line per accepted or rejected proposal
+  bool search_complete = true;         // false when the time budget cut proposals short
 };
 
 // Recovers a sequence for `target`. Deterministic for a given seed.
