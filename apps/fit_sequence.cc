@@ -184,7 +184,8 @@ int main(int argc, char** argv) {
     metrics["fit"] = {{"final_loss", Number(recovered.loss)},
                       {"fits", recovered.num_fits},
                       {"seconds", recovered.seconds},
-                      {"time_budget_seconds", zero_shot_options.time_budget_seconds}};
+                      {"time_budget_seconds", zero_shot_options.time_budget_seconds},
+                      {"search_complete", recovered.search_complete}};
   }
   std::string log;
   for (const std::string& line : recovered.decisions) log += line + "\n";

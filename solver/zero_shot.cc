@@ -8,7 +8,6 @@
 #include <functional>
 #include <limits>
 #include <ostream>
-#include <set>
 #include <tuple>
 #include <sstream>
 
@@ -124,19 +123,18 @@ class Controller {
     Trial best = FitGlobalAffine();
     if (!best.ok) throw std::runtime_error("the global affine fit failed");
     best = ConsiderSmoothing(best);
+    best = ChooseMainForm(best);
     // Stages feed each other (a bend lets a profile help, a profile gives extrusions faces), so
     // they repeat until a whole pass changes nothing.
-    // Within a pass, proposals that add one op come before those that add several, so a
-    // simple explanation (a hole, a bend) is found before a profile imitates it.
     for (int pass = 0; pass < 3 && InBudget(); ++pass) {
       const double before = best.loss;
-      best = StageHoles(best);
+      best = StageSlab(best);
+      best = StageProfile(best);
       best = StageDeforms(best);
       best = StageRidge(best);
+      best = StageHoles(best);
       best = RepeatDetails(best);
-      best = StageProfile(best);
       best = StageGrid(best);
-      best = StageSlab(best);
       // Rounding comes after the extrusions, as a modeller would bevel: a bevel first would
       // round the cage toward a protrusion and split its faces below the extrusions' support.
       best = StageBevel(best);
@@ -147,6 +145,36 @@ class Controller {
   }
 
  private:
+  // The first decision shapes the rest of a greedy search (a profile accepted for a small gain
+  // blocks the extrusion that explains a boss; a small bend blocks a profile), so it is made
+  // best-first: every stage runs from the pose, and the one with the lowest loss after the
+  // price of its ops wins. The passes then add to it in a fixed order.
+  Trial ChooseMainForm(const Trial& start) {
+    using Stage = Trial (Controller::*)(Trial);
+    const std::pair<const char*, Stage> stages[] = {{"slab", &Controller::StageSlab},
+                                                    {"profile", &Controller::StageProfile},
+                                                    {"deform", &Controller::StageDeforms},
+                                                    {"ridge", &Controller::StageRidge},
+                                                    {"hole", &Controller::StageHoles},
+                                                    {"detail", &Controller::RepeatDetails}};
+    Trial chosen = start;
+    double chosen_score = start.loss;
+    std::string chosen_stage;
+    Vec3d chosen_half_extent = half_extent_;
+    const Vec3d start_half_extent = half_extent_;
+    for (const auto& [name, stage] : stages) {
+      if (!InBudget()) break;
+      half_extent_ = start_half_extent;
+      const Trial trial = (this->*stage)(start);
+      const int added = trial.layout.NumOps() - start.layout.NumOps();
+      const double score = trial.ok ? trial.loss / std::pow(1.0 - options_.min_relative_gain, added) : kInf;
+      if (score < chosen_score) chosen = trial, chosen_score = score, chosen_stage = name, chosen_half_extent = half_extent_;
+    }
+    half_extent_ = chosen_half_extent;
+    if (!chosen_stage.empty()) Log("main form", start, chosen, true, "the " + chosen_stage + " stage's result");
+    return chosen;
+  }
+
   // Proposals stop at this share of the budget; the finishing fits (gate pruning, polishing,
   // simplification: 20-40 s on a 20-op sequence) take the rest.
   static constexpr double kSearchShare = 0.65;
@@ -157,20 +185,56 @@ class Controller {
   }
   double Seconds() const { return std::chrono::duration<double>(Clock::now() - start_).count(); }
 
+  // True when a step has an edge shorter than 1e-5 of its bounding-box diagonal: a fit drove an
+  // op to a degenerate setting (an inset of zero thickness, a cap folded onto its base). Such
+  // geometry is not what a modeller makes, and Blender's float32 coordinates turn its slivers'
+  // normals into noise that later ops (a bevel) amplify.
+  static bool HasCollapsedEdge(const std::vector<Mesh>& steps) {
+    for (const Mesh& mesh : steps) {
+      Vec3d lo = Vec3d::Constant(kInf), hi = Vec3d::Constant(-kInf);
+      for (const Vec3d& v : mesh.vertices) lo = lo.cwiseMin(v), hi = hi.cwiseMax(v);
+      const double min_length = 1e-5 * (hi - lo).norm();
+      for (const Polygon& face : mesh.faces) {
+        for (size_t i = 0; i < face.size(); ++i) {
+          if ((mesh.vertices[face[i]] - mesh.vertices[face[(i + 1) % face.size()]]).norm() < min_length) return true;
+        }
+      }
+    }
+    return false;
+  }
+
+  // Domain rules of a modeller's sequence, as soft ranges: an extrusion tilts by at most 45
+  // degrees (beyond that its side walls fold over the cap: a shear, not an extrusion); an
+  // inset keeps a rim of at least 1% of the cube's smallest half extent (a zero rim is a
+  // degenerate ring of faces).
+  FitterOptions WithDomainRules(FitterOptions options, const Json& document) const {
+    constexpr double kMaxTilt = kPi / 4;
+    constexpr int kTiltU = 2, kTiltV = 3;  // Extrude's parameters: height, width, tilt_u, tilt_v
+    constexpr int kThickness = 0;          // Inset's parameters: thickness, depth
+    const Json& ops = document.at("operations");
+    for (int k = 0; k < static_cast<int>(ops.size()); ++k) {
+      if (ops[k].at("op") == "Extrude") {
+        for (int param : {kTiltU, kTiltV}) options.domain_rules.push_back({k, param, -kMaxTilt, kMaxTilt, 1.0});
+      }
+      if (ops[k].at("op") == "Inset") options.domain_rules.push_back({k, kThickness, 0.01 * half_extent_.minCoeff(), kInf, 1.0});
+    }
+    return options;
+  }
+
   Trial Fit(const Layout& layout, const FitterOptions& options) {
     Trial trial;
     trial.layout = layout;
     if (layout.NumOps() > options_.max_ops) return trial;
     try {
-      Sequence sequence = ParseSequence(layout.Document());
-      const FitSummary summary = FitSequence(target_, &sequence, options);
+      const Json document = layout.Document();
+      Sequence sequence = ParseSequence(document);
+      const FitSummary summary = FitSequence(target_, &sequence, WithDomainRules(options, document));
       ++num_fits_;
       trial.layout = layout.WithParameters(SequenceToJson(sequence));
       // The written sequence must replay: its selectors re-resolve at the fitted parameters.
       Sequence replay = ParseSequence(trial.layout.Document());
-      EvaluateSequence(&replay);
       trial.loss = summary.final_loss;
-      trial.ok = std::isfinite(trial.loss);
+      trial.ok = std::isfinite(trial.loss) && !HasCollapsedEdge(EvaluateSequence(&replay));
     } catch (const std::exception&) {
       trial.ok = false;  // a proposal whose targets vanish or whose fit fails is rejected
     }
@@ -181,14 +245,22 @@ class Controller {
 
   // Fits `propose`'s change of `best`; keeps it when the loss falls by more than the price of
   // the ops it adds.
-  Trial Consider(const std::string& stage, const Trial& best, const Proposal& propose) {
-    return ConsiderBest(stage, best, {propose});
+  Trial Consider(const std::string& stage, const Trial& best, const Proposal& propose, double gain_per_op = 0) {
+    return ConsiderBest(stage, best, {propose}, gain_per_op);
   }
+
+  // Special-purpose structures (a hole, a ridge) can also lower the loss a little where the
+  // target has none, by bending the cage toward it; they must explain a quarter of the loss
+  // per op they add, and then the general proposals that follow are not blocked by them.
+  static constexpr double kStructureGainPerOp = 0.25;
 
   // Fits each alternative change of `best` and keeps the one whose loss, divided by the price
   // of the ops it adds, is lowest, if that is below the loss of `best`. A proposal that
-  // shortens the sequence may cost some loss: the same price per op.
-  Trial ConsiderBest(const std::string& stage, const Trial& best, const std::vector<Proposal>& alternatives) {
+  // shortens the sequence may cost some loss: the same price per op. The price per op is
+  // `min_relative_gain`, or `gain_per_op` when larger.
+  Trial ConsiderBest(const std::string& stage, const Trial& best, const std::vector<Proposal>& alternatives,
+                     double gain_per_op = 0) {
+    const double gain = std::max(gain_per_op, options_.min_relative_gain);
     Trial chosen = best;
     double chosen_score = best.loss;
     std::string chosen_what;
@@ -199,7 +271,7 @@ class Controller {
       if (what.empty()) continue;
       const Trial trial = Fit(layout, search_options_);
       const int added = layout.NumOps() - best.layout.NumOps();
-      const double score = trial.ok ? trial.loss / std::pow(1.0 - options_.min_relative_gain, added) : kInf;
+      const double score = trial.ok ? trial.loss / std::pow(1.0 - gain, added) : kInf;
       const bool better = score < chosen_score;
       if (alternatives.size() > 1 && !better) Log(stage, best, trial, false, what);
       if (better) chosen = trial, chosen_score = score, chosen_what = what;
@@ -357,12 +429,20 @@ class Controller {
                                            {8, {}, "x8, each loop scaled"}};
     for (const Profile& profile : profiles) {
       const std::string name = "LoopCut " + std::string(kAxisNames[axis]) + " " + profile.name;
-      if (!tried_profiles_.insert(name).second) continue;
-      best = Consider("profile", best, [&](Layout* l) -> std::string {
-        l->profile = LoopOps(axis, profile.cuts, 4, profile.groups);
-        l->profile_name = name;
-        return name;
-      });
+      // Tried again in every pass: a bend or a hole accepted since can make a profile pay.
+      if (best.layout.profile_name == name) continue;
+      // A round form (a barrel, a vase) is a profile on a subdivided cage: neither alone
+      // lowers the loss much, so the profile is also tried with Subdivision.
+      auto with_profile = [&](bool subdivide) -> Proposal {
+        return [&, subdivide](Layout* l) -> std::string {
+          if (subdivide && l->subdivide) return "";
+          l->profile = LoopOps(axis, profile.cuts, 4, profile.groups);
+          l->profile_name = name;
+          l->subdivide = l->subdivide || subdivide;
+          return name + (subdivide ? " + Subdivision(2)" : "");
+        };
+      };
+      best = ConsiderBest("profile", best, {with_profile(false), with_profile(true)});
     }
     return best;
   }
@@ -438,7 +518,7 @@ class Controller {
       }
     }
     if (!best_ridge.ok) return best;
-    const bool accept = best_ridge.loss < best.loss * std::pow(1.0 - options_.min_relative_gain, 2);
+    const bool accept = best_ridge.loss < best.loss * std::pow(1.0 - std::max(kStructureGainPerOp, options_.min_relative_gain), 2);
     Log("ridge", best, best_ridge, accept, best_what);
     return accept ? best_ridge : best;
   }
@@ -472,7 +552,7 @@ class Controller {
                                                   {"rotation_deg", ToJson(rotation_deg)},
                                                   {"location", {0.0, 0.0, 0.0}}}));
           return std::string("+Boolean difference ") + primitive + (spin_deg != 0 ? " (turned)" : "") + " along " + kAxisNames[axis];
-        });
+        }, kStructureGainPerOp);
       }
     }
     return best;
@@ -609,21 +689,29 @@ class Controller {
     if (axis < 0) return best;
     const Vec3d half_extent = half_extent_;
     // The slab is not fitted alone: the rest of the target would pull it back to the bounding
-    // box. Its extrusions are proposed from the placed slab and fitted with it.
-    Trial trial;
-    trial.layout = PoseLayout(world_from_local_, axis, lo, hi);
-    const int a = (axis + 1) % 3, b = (axis + 2) % 3;
-    trial.layout.grid = LoopOps(std::min(a, b), 2, 4, {{0, 1}});
-    const std::vector<Json> second = LoopOps(std::max(a, b), 2, -1, {{0, 1}});
-    trial.layout.grid.insert(trial.layout.grid.end(), second.begin(), second.end());
-    trial.ok = true;  // with an unknown (infinite) loss, so its first extrusions are taken
-    const std::string what = std::string("slab across ") + kAxisNames[axis] + " with a LoopCut grid";
-    trial = RepeatDetails(trial);
-    trial.ok = std::isfinite(trial.loss);
-    const int added = trial.layout.NumOps() - best.layout.NumOps();
-    const bool accept = trial.ok && trial.loss < best.loss * std::pow(1.0 - options_.min_relative_gain, added);
-    Log("slab", best, trial, accept, what + " and its extrusions");
-    if (accept) return trial;
+    // box. Its extrusions are proposed from the placed slab and fitted with it; with a loop-cut
+    // grid across it (legs at the corners) and without (a boss on the whole face).
+    Trial chosen = best;
+    for (bool grid : {false, true}) {
+      if (!InBudget()) break;
+      Trial trial;
+      trial.layout = PoseLayout(world_from_local_, axis, lo, hi);
+      if (grid) {
+        const int a = (axis + 1) % 3, b = (axis + 2) % 3;
+        trial.layout.grid = LoopOps(std::min(a, b), 2, 4, {{0, 1}});
+        const std::vector<Json> second = LoopOps(std::max(a, b), 2, -1, {{0, 1}});
+        trial.layout.grid.insert(trial.layout.grid.end(), second.begin(), second.end());
+      }
+      trial.ok = true;  // with an unknown (infinite) loss, so its first extrusions are taken
+      trial = RepeatDetails(trial);
+      trial.ok = std::isfinite(trial.loss);
+      const int added = trial.layout.NumOps() - chosen.layout.NumOps();
+      const bool accept = trial.ok && trial.loss < chosen.loss * std::pow(1.0 - options_.min_relative_gain, added);
+      Log("slab", chosen, trial, accept,
+          std::string("slab across ") + kAxisNames[axis] + (grid ? " with a LoopCut grid" : "") + " and its extrusions");
+      if (accept) chosen = trial;
+    }
+    if (chosen.layout.Document() != best.layout.Document()) return chosen;
     half_extent_ = half_extent;
     return best;
   }
@@ -822,13 +910,13 @@ class Controller {
     double loss = best.loss;
     Json document = best.layout.Document();
     try {
-      const FitSummary summary = FitSequence(target_, &sequence, options);
+      const FitSummary summary = FitSequence(target_, &sequence, WithDomainRules(options, document));
       ++num_fits_;
       Json fitted = SequenceToJson(sequence);
       Sequence replay = ParseSequence(fitted);
-      EvaluateSequence(&replay);
+      const bool collapsed = HasCollapsedEdge(EvaluateSequence(&replay));
       // Pruning must not undo what the search paid for.
-      if (summary.final_loss <= best.loss * (1 + options_.min_relative_gain)) {
+      if (!collapsed && summary.final_loss <= best.loss * (1 + options_.min_relative_gain)) {
         document = fitted;
         loss = summary.final_loss;
       }
@@ -853,6 +941,9 @@ class Controller {
     result.seconds = Seconds();
     result.decisions = decisions_;
     result.search_complete = !budget_ended_search_;
+    if (budget_ended_search_) {
+      result.decisions.push_back("[zero-shot] the time budget ended the search before every proposal was tried");
+    }
     if (options_.progress != nullptr) {
       *options_.progress << "[zero-shot] final: " << document["operations"].size() << " ops, loss " << loss << ", "
                          << num_fits_ << " fits, " << result.seconds << " s" << std::endl;
@@ -871,7 +962,6 @@ class Controller {
   mutable bool budget_ended_search_ = false;  // a proposal was skipped for lack of time
   int num_fits_ = 0;
   std::vector<std::string> decisions_;
-  std::set<std::string> tried_profiles_;
 };
 
 }  // namespace

@@ -3,9 +3,9 @@
 // first, as a modeller builds (docs/zero-shot.md has the details):
 //   1. global affine: a cube scaled, rotated and translated onto the target;
 //   2. smoothness: Subdivision (level 2) at the end of the structure, kept if it helps;
-//   3. repeated passes of: holes (Boolean difference), deformations (SimpleDeform), a ridge
-//      (loop cut with raised vertices), protrusions and cavities (Extrude, or Inset then
-//      Extrude, on faces found from the residuals), profiles (LoopCut with loop scales), a
+//   3. repeated passes of: profiles (LoopCut with loop scales), deformations (SimpleDeform), a
+//      ridge (loop cut with raised vertices), holes (Boolean difference), protrusions and
+//      cavities (Extrude, or Inset then Extrude, on faces found from the residuals), a
 //      loop-cut grid or a slab body with the extrusions they enable, Bevel, Subdivision;
 //   4. pruning: op gates fitted with the sparsity stage, ops below the threshold removed, a
 //      polishing fit, ops the Chamfer distance does not need dropped, the scale written first.
