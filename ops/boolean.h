@@ -25,7 +25,7 @@
 // An input polygon the primitive cuts whose corners lie farther than kMaxCutFaceNonPlanarity (of
 // the input's bounding-box diagonal) from its plane is refused (FieldError "operation"): Blender
 // splits it along the diagonal its loop start gives, which the ops before need not reproduce
-// (LoopCut's strips start one corner apart from Blender's), and the two diagonals are different
+// (half of LoopCut's strips start one corner off Blender's), and the two diagonals are different
 // surfaces (a twisted, loop-cut block cut by a prism: 104 vertices against Blender's 110).
 //
 // JSON: {"operation": "UNION"|"DIFFERENCE", "primitive": "cube"|"prism6"|"prism8"|"cylinder",
