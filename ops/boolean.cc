@@ -1,6 +1,7 @@
 #include "ops/boolean.h"
 
 #include <algorithm>
+#include <cstdio>
 #include <map>
 #include <numeric>
 #include <set>
@@ -284,6 +285,18 @@ bool OnTriangle(const Vec3d& p, const Vec3d& a, const Vec3d& b, const Vec3d& c, 
   return true;
 }
 
+// Largest distance of a polygon's corners from its plane (through the centroid, normal to the
+// area vector); 0 for a triangle.
+double OffPlane(const Positions<double>& vertices, const Polygon& face) {
+  const Vec3d normal = FaceAreaNormal(vertices, face).normalized();
+  Vec3d centroid = Vec3d::Zero();
+  for (int v : face) centroid += vertices[v];
+  centroid /= static_cast<double>(face.size());
+  double off = 0;
+  for (int v : face) off = std::max(off, std::abs(normal.dot(vertices[v] - centroid)));
+  return off;
+}
+
 // Edge-plane crossing: the point of line (edge_from, edge_to) on the plane through a, b, c.
 template <typename T>
 Vec3<T> Crossing(const Vec3<T>& edge_from, const Vec3<T>& edge_to, const Vec3<T>& a, const Vec3<T>& b,
@@ -501,6 +514,28 @@ void BooleanOp::Prepare(const Mesh& input) {
       }
     }
     if (source_face[r] < 0) throw FieldError("operation", "internal: a face of the boolean has no source");
+  }
+
+  // A cut non-planar input polygon: which diagonal Blender's triangulation takes follows its
+  // loop start, which the ops before need not reproduce, and the two diagonals are different
+  // surfaces there (the cut's vertices, and their count, move with it).
+  std::vector<bool> cut(input.NumFaces(), false);
+  for (int r = 0; r < num_result_triangles; ++r) {
+    if (source_face[r] >= input.NumFaces()) continue;
+    for (int v : result.triangles[r]) cut[source_face[r]] = cut[source_face[r]] || sources[v].kind == Source::kCrossing;
+  }
+  Vec3d input_lo = input.vertices[0], input_hi = input.vertices[0];
+  for (const Vec3d& v : input.vertices) input_lo = input_lo.cwiseMin(v), input_hi = input_hi.cwiseMax(v);
+  const double input_diagonal = std::max((input_hi - input_lo).norm(), 1e-300);
+  for (int f = 0; f < input.NumFaces(); ++f) {
+    if (!cut[f]) continue;
+    const double off_plane = OffPlane(input.vertices, input.faces[f]) / input_diagonal;
+    if (off_plane > kMaxCutFaceNonPlanarity) {
+      char off[16];
+      std::snprintf(off, sizeof(off), "%.1e", off_plane);
+      throw FieldError("operation", std::string("the primitive cuts a non-planar face (off its plane by ") + off +
+                                        " of the diagonal): Blender's exact boolean may triangulate it differently");
+    }
   }
 
   // Blender retriangulates each operand triangle with a constrained Delaunay triangulation; CGAL's

@@ -18,11 +18,15 @@
 // share a vertex besides the edge's ends (so a face with a hole is split into hole-free polygons
 // along the shortest remaining edges); a face left whole keeps its loop; then a crossing with
 // the same two neighbours in every polygon around it, in a straight line, is dissolved.
-// Counts can differ from Blender's on exact ties and on booleans of non-planar polygons an
-// earlier boolean cut (same surface); see docs/sequence-format.md.
+// Counts can differ from Blender's on exact ties; see docs/sequence-format.md.
 // A crossing where the best-conditioned edge lies within kMinCrossingSine (sine of the angle)
 // of the plane it crosses is refused (FieldError "operation"): its position would amplify the
 // rounding of Blender's float32 coordinates past the parity tolerance.
+// An input polygon the primitive cuts whose corners lie farther than kMaxCutFaceNonPlanarity (of
+// the input's bounding-box diagonal) from its plane is refused (FieldError "operation"): Blender
+// splits it along the diagonal its loop start gives, which the ops before need not reproduce
+// (half of LoopCut's strips start one corner off Blender's), and the two diagonals are different
+// surfaces (a twisted, loop-cut block cut by a prism: 104 vertices against Blender's 110).
 //
 // JSON: {"operation": "UNION"|"DIFFERENCE", "primitive": "cube"|"prism6"|"prism8"|"cylinder",
 //        "size": [sx, sy, sz] (> 0, full extents), "rotation_deg": [3] (default 0),
@@ -40,6 +44,10 @@
 namespace opgraph {
 
 constexpr double kMinCrossingSine = 0.02;  // about 1.1 degrees
+// The two diagonals of a quad whose corners lie within h of a plane are surfaces up to 2 h apart:
+// 1e-7 of the bounding-box diagonal keeps that 5 times under the parity tolerance (1e-6), and
+// far above the rounding of faces planar by construction (below 1e-16 in every parity case).
+constexpr double kMaxCutFaceNonPlanarity = 1e-7;
 
 class BooleanOp : public OpBase<BooleanOp> {
  public:

@@ -300,6 +300,11 @@ INSTANTIATE_TEST_SUITE_P(
         // A cutter tilted 0.5 degrees off the top face, crossing it: ill-conditioned in float32.
         BadInput{"boolean_grazing", R"({"operations": [{"op": "Boolean", "params": {"operation": "DIFFERENCE", "primitive": "cube", "size": [1, 1, 1], "rotation_deg": [0.5, 0, 0], "location": [0, 0, 1.5]}}]})",
                  "operation 0 (Boolean): field 'operation': the primitive crosses the mesh at a grazing angle (0.35 degrees): the intersection is ill-conditioned"},
+        // A cutter through a side of a twisted cube: Blender splits that non-planar quad along the
+        // diagonal its loop start gives, which the engine cannot know.
+        BadInput{"boolean_non_planar", R"({"operations": [{"op": "SimpleDeformTwist", "params": {"axis": "Z", "angle_deg": 40}},
+                                                         {"op": "Boolean", "params": {"operation": "DIFFERENCE", "primitive": "cube", "size": [1, 1, 1], "location": [1, 0, 0]}}]})",
+                 "operation 1 (Boolean): field 'operation': the primitive cuts a non-planar face (off its plane by 8.3e-02 of the diagonal)"},
         BadInput{"bad_word", R"({"operations": [{"op": "SimpleDeformTwist", "params": {"axis": "W'); import os; ('", "angle_deg": 10}}]})",
                  "operation 0 (SimpleDeformTwist): field 'axis': 'W'); import os; ('' is not one of X, Y, Z"},
         BadInput{"boolean_primitive",
