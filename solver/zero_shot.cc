@@ -9,6 +9,7 @@
 #include <limits>
 #include <ostream>
 #include <tuple>
+#include <set>
 #include <sstream>
 
 #include "core/geometry.h"
@@ -147,8 +148,8 @@ class Controller {
  private:
   // The first decision shapes the rest of a greedy search (a profile accepted for a small gain
   // blocks the extrusion that explains a boss; a small bend blocks a profile), so it is made
-  // best-first: every stage runs from the pose, and the one with the lowest loss after the
-  // price of its ops wins. The passes then add to it in a fixed order.
+  // best-first: every stage runs from the pose (a rounded box is a Bevel of it), and the one
+  // with the lowest loss after the price of its ops wins. The passes then add to it in a fixed order.
   Trial ChooseMainForm(const Trial& start) {
     using Stage = Trial (Controller::*)(Trial);
     const std::pair<const char*, Stage> stages[] = {{"slab", &Controller::StageSlab},
@@ -156,7 +157,8 @@ class Controller {
                                                     {"deform", &Controller::StageDeforms},
                                                     {"ridge", &Controller::StageRidge},
                                                     {"hole", &Controller::StageHoles},
-                                                    {"detail", &Controller::RepeatDetails}};
+                                                    {"detail", &Controller::RepeatDetails},
+                                                    {"bevel", &Controller::StageBevel}};
     Trial chosen = start;
     double chosen_score = start.loss;
     std::string chosen_stage;
@@ -203,6 +205,28 @@ class Controller {
     return false;
   }
 
+  // True when a Subdivision's input has a vertex with only two edges (a Boolean leaves them
+  // where a cut bends across a face): our Subdivision and Blender's disagree there (docs/
+  // sequence-format.md), so the written sequence would not rebuild the same mesh.
+  static bool SubdividesTwoEdgeVertex(const Json& document, const std::vector<Mesh>& steps) {
+    const Json& ops = document.at("operations");
+    for (size_t k = 1; k < ops.size() && k < steps.size(); ++k) {
+      if (ops[k].at("op") != "Subdivision") continue;
+      const Mesh& input = steps[k - 1];
+      std::vector<std::set<int>> neighbours(input.vertices.size());
+      for (const Polygon& face : input.faces) {
+        for (size_t i = 0; i < face.size(); ++i) {
+          const int a = face[i], b = face[(i + 1) % face.size()];
+          neighbours[a].insert(b), neighbours[b].insert(a);
+        }
+      }
+      for (const std::set<int>& n : neighbours) {
+        if (n.size() == 2) return true;
+      }
+    }
+    return false;
+  }
+
   // Domain rules of a modeller's sequence, as soft ranges: an extrusion tilts by at most 45
   // degrees (beyond that its side walls fold over the cap: a shear, not an extrusion); an
   // inset keeps a rim of at least 1% of the cube's smallest half extent (a zero rim is a
@@ -234,7 +258,8 @@ class Controller {
       // The written sequence must replay: its selectors re-resolve at the fitted parameters.
       Sequence replay = ParseSequence(trial.layout.Document());
       trial.loss = summary.final_loss;
-      trial.ok = std::isfinite(trial.loss) && !HasCollapsedEdge(EvaluateSequence(&replay));
+      const std::vector<Mesh> steps = EvaluateSequence(&replay);
+      trial.ok = std::isfinite(trial.loss) && !HasCollapsedEdge(steps) && !SubdividesTwoEdgeVertex(document, steps);
     } catch (const std::exception&) {
       trial.ok = false;  // a proposal whose targets vanish or whose fit fails is rejected
     }
