@@ -16,6 +16,8 @@
 #include <sstream>
 #include <string>
 
+#include <glog/logging.h>
+
 #include "apps/sequence_outputs.h"
 #include "core/metrics.h"
 #include "core/obj_io.h"
@@ -41,6 +43,10 @@ opgraph::Json Number(double x) { return std::isfinite(x) ? opgraph::Json(x) : op
 
 int main(int argc, char** argv) {
   using namespace opgraph;
+  // Ceres warns (with a dump of the residual block) when a trial step's Jacobian is not finite,
+  // as at a Boolean's degenerate placement; the solver rejects that step by itself, and the
+  // dump is noise on a user's terminal. Errors still show.
+  FLAGS_minloglevel = google::GLOG_ERROR;
   std::string input_path, init_path, out_dir;
   FitterOptions options;
   TargetOptions target_options;

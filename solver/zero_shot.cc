@@ -852,7 +852,11 @@ class Controller {
           return "+Extrude out" + count + " " + std::to_string(height) + " width " + std::to_string(width);
         });
       }
-      if (inset_width < 0.8) {
+      // Only on faces sharing one plane's normal: an inset region that folds between faces at a
+      // boundary corner can differ from Blender's (ops/inset.h).
+      bool coplanar_normals = true;
+      for (const Candidate& c : group) coplanar_normals = coplanar_normals && normals[c.face].dot(normals[group[0].face]) > 1 - 1e-9;
+      if (inset_width < 0.8 && coplanar_normals) {
         alternatives.push_back([&](Layout* l) -> std::string {
           const double thickness = 0.5 * (1 - inset_width) * side;
           l->details.push_back(MakeOp("Inset", {{"faces", faces}, {"thickness", thickness}}));
