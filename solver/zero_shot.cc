@@ -228,17 +228,19 @@ class Controller {
   }
 
   // Domain rules of a modeller's sequence, as soft ranges: an extrusion tilts by at most 45
-  // degrees (beyond that its side walls fold over the cap: a shear, not an extrusion); an
-  // inset keeps a rim of at least 1% of the cube's smallest half extent (a zero rim is a
-  // degenerate ring of faces).
+  // degrees (beyond that its side walls fold over the cap: a shear, not an extrusion) and
+  // scales its cap by 0.1 to 10 (a fit once shrank a face to a speck with an inset and blew it
+  // up 370 times, which multiplies Blender's float32 rounding into the replay); an inset keeps
+  // a rim of at least 1% of the cube's smallest half extent (a zero rim is a degenerate ring).
   FitterOptions WithDomainRules(FitterOptions options, const Json& document) const {
     constexpr double kMaxTilt = kPi / 4;
-    constexpr int kTiltU = 2, kTiltV = 3;  // Extrude's parameters: height, width, tilt_u, tilt_v
+    constexpr int kWidth = 1, kTiltU = 2, kTiltV = 3;  // Extrude's: height, width, tilt_u, tilt_v
     constexpr int kThickness = 0;          // Inset's parameters: thickness, depth
     const Json& ops = document.at("operations");
     for (int k = 0; k < static_cast<int>(ops.size()); ++k) {
       if (ops[k].at("op") == "Extrude") {
         for (int param : {kTiltU, kTiltV}) options.domain_rules.push_back({k, param, -kMaxTilt, kMaxTilt, 1.0});
+        options.domain_rules.push_back({k, kWidth, 0.1, 10.0, 1.0});
       }
       if (ops[k].at("op") == "Inset") options.domain_rules.push_back({k, kThickness, 0.01 * half_extent_.minCoeff(), kInf, 1.0});
     }
