@@ -169,7 +169,7 @@ class Controller {
       half_extent_ = start_half_extent;
       const Trial trial = (this->*stage)(start);
       const int added = trial.layout.NumOps() - start.layout.NumOps();
-      const double score = trial.ok ? trial.loss / std::pow(1.0 - options_.min_relative_gain, added) : kInf;
+      const double score = trial.ok ? trial.loss / Price(added) : kInf;
       if (score < chosen_score) chosen = trial, chosen_score = score, chosen_stage = name, chosen_half_extent = half_extent_;
     }
     half_extent_ = chosen_half_extent;
@@ -276,6 +276,12 @@ class Controller {
     return ConsiderBest(stage, best, {propose}, gain_per_op);
   }
 
+  // The factor a loss must fall by to pay for `added` ops (below 1; above 1 when ops are
+  // removed): `min_relative_gain` per op, or `gain_per_op` when larger.
+  double Price(int added, double gain_per_op = 0) const {
+    return std::pow(1.0 - std::max(gain_per_op, options_.min_relative_gain), added);
+  }
+
   // Special-purpose structures (a hole, a ridge) can also lower the loss a little where the
   // target has none, by bending the cage toward it; they must explain a quarter of the loss
   // per op they add, and then the general proposals that follow are not blocked by them.
@@ -287,7 +293,6 @@ class Controller {
   // `min_relative_gain`, or `gain_per_op` when larger.
   Trial ConsiderBest(const std::string& stage, const Trial& best, const std::vector<Proposal>& alternatives,
                      double gain_per_op = 0) {
-    const double gain = std::max(gain_per_op, options_.min_relative_gain);
     Trial chosen = best;
     double chosen_score = best.loss;
     std::string chosen_what;
@@ -298,11 +303,13 @@ class Controller {
       if (what.empty()) continue;
       const Trial trial = Fit(layout, search_options_);
       const int added = layout.NumOps() - best.layout.NumOps();
-      const double score = trial.ok ? trial.loss / std::pow(1.0 - gain, added) : kInf;
+      const double score = trial.ok ? trial.loss / Price(added, gain_per_op) : kInf;
       const bool better = score < chosen_score;
-      if (alternatives.size() > 1 && !better) Log(stage, best, trial, false, what);
-      if (better) chosen = trial, chosen_score = score, chosen_what = what;
-      if (alternatives.size() == 1 && !better) Log(stage, best, trial, false, what);
+      if (better) {
+        chosen = trial, chosen_score = score, chosen_what = what;
+      } else {
+        Log(stage, best, trial, false, what);
+      }
     }
     if (!chosen_what.empty()) Log(stage, best, chosen, true, chosen_what);
     return chosen;
@@ -545,7 +552,7 @@ class Controller {
       }
     }
     if (!best_ridge.ok) return best;
-    const bool accept = best_ridge.loss < best.loss * std::pow(1.0 - std::max(kStructureGainPerOp, options_.min_relative_gain), 2);
+    const bool accept = best_ridge.loss < best.loss * Price(2, kStructureGainPerOp);
     Log("ridge", best, best_ridge, accept, best_what);
     return accept ? best_ridge : best;
   }
@@ -651,7 +658,7 @@ class Controller {
         // A grid is there for its extrusions: without any, its loop scales would only be a
         // second profile.
         const bool accept = trial.layout.details.size() > details_before &&
-                            trial.loss < best.loss * std::pow(1.0 - options_.min_relative_gain, added);
+                            trial.loss < best.loss * Price(added);
         Log("grid", best, trial, accept, what + " with its extrusions");
         if (accept) best = trial;
       }
@@ -733,7 +740,7 @@ class Controller {
       trial = RepeatDetails(trial);
       trial.ok = std::isfinite(trial.loss);
       const int added = trial.layout.NumOps() - chosen.layout.NumOps();
-      const bool accept = trial.ok && trial.loss < chosen.loss * std::pow(1.0 - options_.min_relative_gain, added);
+      const bool accept = trial.ok && trial.loss < chosen.loss * Price(added);
       Log("slab", chosen, trial, accept,
           std::string("slab across ") + kAxisNames[axis] + (grid ? " with a LoopCut grid" : "") + " and its extrusions");
       if (accept) chosen = trial;
