@@ -14,6 +14,7 @@
 
 #include "core/geometry.h"
 #include "core/metrics.h"
+#include "core/surface_distance.h"
 #include "ops/sequence.h"
 #include "solver/scale_first.h"
 
@@ -193,9 +194,7 @@ class Controller {
   // normals into noise that later ops (a bevel) amplify.
   static bool HasCollapsedEdge(const std::vector<Mesh>& steps) {
     for (const Mesh& mesh : steps) {
-      Vec3d lo = Vec3d::Constant(kInf), hi = Vec3d::Constant(-kInf);
-      for (const Vec3d& v : mesh.vertices) lo = lo.cwiseMin(v), hi = hi.cwiseMax(v);
-      const double min_length = 1e-5 * (hi - lo).norm();
+      const double min_length = 1e-5 * BoundingBoxDiagonal(mesh);
       for (const Polygon& face : mesh.faces) {
         for (size_t i = 0; i < face.size(); ++i) {
           if ((mesh.vertices[face[i]] - mesh.vertices[face[(i + 1) % face.size()]]).norm() < min_length) return true;
@@ -225,6 +224,12 @@ class Controller {
       }
     }
     return false;
+  }
+
+  // A fitted candidate whose written sequence Blender would not rebuild the same (see the two
+  // checks above); `steps` are `document`'s evaluated steps.
+  static bool BreaksReplay(const Json& document, const std::vector<Mesh>& steps) {
+    return HasCollapsedEdge(steps) || SubdividesTwoEdgeVertex(document, steps);
   }
 
   // Domain rules of a modeller's sequence, as soft ranges: an extrusion tilts by at most 45
@@ -261,7 +266,7 @@ class Controller {
       Sequence replay = ParseSequence(trial.layout.Document());
       trial.loss = summary.final_loss;
       const std::vector<Mesh> steps = EvaluateSequence(&replay);
-      trial.ok = std::isfinite(trial.loss) && !HasCollapsedEdge(steps) && !SubdividesTwoEdgeVertex(document, steps);
+      trial.ok = std::isfinite(trial.loss) && !BreaksReplay(document, steps);
     } catch (const std::exception&) {
       trial.ok = false;  // a proposal whose targets vanish or whose fit fails is rejected
     }
@@ -952,9 +957,9 @@ class Controller {
       ++num_fits_;
       Json fitted = SequenceToJson(sequence);
       Sequence replay = ParseSequence(fitted);
-      const bool collapsed = HasCollapsedEdge(EvaluateSequence(&replay));
+      const bool breaks_replay = BreaksReplay(fitted, EvaluateSequence(&replay));
       // Pruning must not undo what the search paid for.
-      if (!collapsed && summary.final_loss <= best.loss * (1 + options_.min_relative_gain)) {
+      if (!breaks_replay && summary.final_loss <= best.loss * (1 + options_.min_relative_gain)) {
         document = fitted;
         loss = summary.final_loss;
       }
