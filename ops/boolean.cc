@@ -308,6 +308,13 @@ Vec3<T> Crossing(const Vec3<T>& edge_from, const Vec3<T>& edge_to, const Vec3<T>
 
 }  // namespace
 
+std::string SolidProblem(const Mesh& mesh) {
+  TriangleSoup soup;
+  soup.vertices = mesh.vertices;
+  for (const SourceTriangle& t : Triangulate(mesh)) soup.triangles.push_back(t.corners);
+  return CgalSolidProblem(soup, "the mesh");
+}
+
 BooleanOp::BooleanOp(const Json& params) {
   ParamReader reader(params);
   difference_ = reader.Word("operation", kOperations) == "DIFFERENCE";

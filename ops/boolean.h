@@ -49,6 +49,10 @@ constexpr double kMinCrossingSine = 0.02;  // about 1.1 degrees
 // far above the rounding of faces planar by construction (below 1e-16 in every parity case).
 constexpr double kMaxCutFaceNonPlanarity = 1e-7;
 
+// Empty when `mesh` (triangulated as Blender's exact boolean does) is a closed, manifold,
+// non-self-intersecting surface bounding a volume, i.e. a valid Boolean operand; else why not.
+std::string SolidProblem(const Mesh& mesh);
+
 class BooleanOp : public OpBase<BooleanOp> {
  public:
   explicit BooleanOp(const Json& params);

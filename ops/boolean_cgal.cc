@@ -60,6 +60,16 @@ std::string CgalBooleanUnchecked(const TriangleSoup& a, const TriangleSoup& b, B
 
 }  // namespace
 
+std::string CgalSolidProblem(const TriangleSoup& soup, const std::string& name) {
+  try {
+    SurfaceMesh mesh;
+    return ToSurfaceMesh(soup, name, &mesh);
+  } catch (const std::exception& e) {  // CGAL's failed preconditions, on degenerate input
+    const std::string what = e.what();
+    return name + " cannot be checked: " + what.substr(0, std::min(what.find('\n'), size_t{120}));
+  }
+}
+
 std::string CgalBoolean(const TriangleSoup& a, const TriangleSoup& b, BooleanKind kind, TriangleSoup* out) {
   try {
     return CgalBooleanUnchecked(a, b, kind, out);

@@ -23,4 +23,8 @@ enum class BooleanKind { kUnion, kDifference };
 // not bounding a volume, or CGAL's own refusal).
 std::string CgalBoolean(const TriangleSoup& a, const TriangleSoup& b, BooleanKind kind, TriangleSoup* out);
 
+// Empty when `soup` is a closed, manifold, non-self-intersecting surface bounding a volume,
+// else a one-line description of why not (`name` names it in the message).
+std::string CgalSolidProblem(const TriangleSoup& soup, const std::string& name);
+
 }  // namespace opgraph

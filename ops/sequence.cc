@@ -89,23 +89,31 @@ Json SequenceToJson(const Sequence& sequence) {
           {"operations", ops}};
 }
 
+Mesh ApplyOp(Op* op, double gate, const Mesh& input) {
+  op->Prepare(input);
+  Mesh next;
+  op->Evaluate(op->params().data(), gate, input.vertices, &next.vertices);
+  next.faces = op->OutputFaces(gate);
+  const std::string problem = next.Validate();
+  if (!problem.empty()) throw std::runtime_error("result invalid: " + problem);
+  return next;
+}
+
 std::vector<Mesh> EvaluateSequence(Sequence* sequence) {
   std::vector<Mesh> steps;
   Mesh current = sequence->StartMesh();
   for (size_t i = 0; i < sequence->ops.size(); ++i) {
     Op& op = *sequence->ops[i];
-    Mesh next;
     try {
-      op.Prepare(current);
+      current = ApplyOp(&op, sequence->gates[i], current);
     } catch (const FieldError& e) {
       throw SequenceError(OpLabel(i, op.Name()) + ": field '" + e.field() + "': " + e.what());
+    } catch (const SequenceError&) {
+      throw;
+    } catch (const std::runtime_error& e) {
+      throw SequenceError(OpLabel(i, op.Name()) + ": " + e.what());
     }
-    op.Evaluate(op.params().data(), sequence->gates[i], current.vertices, &next.vertices);
-    next.faces = op.OutputFaces(sequence->gates[i]);
-    const std::string problem = next.Validate();
-    if (!problem.empty()) throw SequenceError(OpLabel(i, op.Name()) + ": result invalid: " + problem);
-    steps.push_back(next);
-    current = std::move(next);
+    steps.push_back(current);
   }
   return steps;
 }

@@ -27,6 +27,10 @@ Sequence ParseSequence(const Json& document);
 Sequence LoadSequence(const std::string& path);
 Json SequenceToJson(const Sequence& sequence);
 
+// One step: `op`'s topology pass on `input`, then its geometry pass at `gate`. Throws FieldError
+// when a target does not exist, std::runtime_error when the result is invalid.
+Mesh ApplyOp(Op* op, double gate, const Mesh& input);
+
 // Runs every op's topology and geometry pass with doubles. Returns the mesh after each step
 // (#ops entries). Throws SequenceError when a target does not exist at its step or the result
 // is not finite.

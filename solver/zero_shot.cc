@@ -15,6 +15,7 @@
 #include "core/geometry.h"
 #include "core/metrics.h"
 #include "core/surface_distance.h"
+#include "ops/replay_guards.h"
 #include "ops/sequence.h"
 #include "solver/scale_first.h"
 
@@ -187,50 +188,6 @@ class Controller {
     return in_budget;
   }
   double Seconds() const { return std::chrono::duration<double>(Clock::now() - start_).count(); }
-
-  // True when a step has an edge shorter than 1e-5 of its bounding-box diagonal: a fit drove an
-  // op to a degenerate setting (an inset of zero thickness, a cap folded onto its base). Such
-  // geometry is not what a modeller makes, and Blender's float32 coordinates turn its slivers'
-  // normals into noise that later ops (a bevel) amplify.
-  static bool HasCollapsedEdge(const std::vector<Mesh>& steps) {
-    for (const Mesh& mesh : steps) {
-      const double min_length = 1e-5 * BoundingBoxDiagonal(mesh);
-      for (const Polygon& face : mesh.faces) {
-        for (size_t i = 0; i < face.size(); ++i) {
-          if ((mesh.vertices[face[i]] - mesh.vertices[face[(i + 1) % face.size()]]).norm() < min_length) return true;
-        }
-      }
-    }
-    return false;
-  }
-
-  // True when a Subdivision's input has a vertex with only two edges (a Boolean leaves them
-  // where a cut bends across a face): our Subdivision and Blender's disagree there (docs/
-  // sequence-format.md), so the written sequence would not rebuild the same mesh.
-  static bool SubdividesTwoEdgeVertex(const Json& document, const std::vector<Mesh>& steps) {
-    const Json& ops = document.at("operations");
-    for (size_t k = 1; k < ops.size() && k < steps.size(); ++k) {
-      if (ops[k].at("op") != "Subdivision") continue;
-      const Mesh& input = steps[k - 1];
-      std::vector<std::set<int>> neighbours(input.vertices.size());
-      for (const Polygon& face : input.faces) {
-        for (size_t i = 0; i < face.size(); ++i) {
-          const int a = face[i], b = face[(i + 1) % face.size()];
-          neighbours[a].insert(b), neighbours[b].insert(a);
-        }
-      }
-      for (const std::set<int>& n : neighbours) {
-        if (n.size() == 2) return true;
-      }
-    }
-    return false;
-  }
-
-  // A fitted candidate whose written sequence Blender would not rebuild the same (see the two
-  // checks above); `steps` are `document`'s evaluated steps.
-  static bool BreaksReplay(const Json& document, const std::vector<Mesh>& steps) {
-    return HasCollapsedEdge(steps) || SubdividesTwoEdgeVertex(document, steps);
-  }
 
   // Domain rules of a modeller's sequence, as soft ranges: an extrusion tilts by at most 45
   // degrees (beyond that its side walls fold over the cap: a shear, not an extrusion) and

@@ -17,6 +17,7 @@
 #include "core/obj_io.h"
 #include "core/surface_distance.h"
 #include "ops/sequence.h"
+#include "tests/blender_runner.h"
 #include "tests/gt_convert.h"
 
 namespace opgraph {
@@ -138,29 +139,14 @@ TEST_P(ParityCase, GateZeroIsIdentity) {
   }
 }
 
-std::string Quote(const std::string& s) { return "'" + s + "'"; }
 
-// Runs rebuild_blender.py in real Blender; returns the mesh Blender built.
-Mesh RunBlender(const std::string& script, const std::string& out_obj) {
-  const std::string log = out_obj + ".log";
-  const std::string command = "blender -b --factory-startup --python-exit-code 1 -P " + Quote(script) +
-                              " -- " + Quote(out_obj) + " > " + Quote(log) + " 2>&1";
-  const int status = std::system(command.c_str());
-  if (status != 0) {
-    std::ifstream in(log);
-    std::stringstream text;
-    text << in.rdbuf();
-    throw std::runtime_error("blender failed (" + command + "):\n" + text.str());
-  }
-  return ReadObj(out_obj);
-}
 
 // Real Blender replaying our rebuild_blender.py builds the mesh we computed.
 TEST_P(ParityCase, BlenderRebuildMatches) {
   const fs::path dir = fs::temp_directory_path() / ("opgraph_parity_" + GetParam());
   fs::remove_all(dir);
-  const std::string command = std::string(OPGRAPH_APPLY_SEQUENCE) + " " + Quote(ParityPath(GetParam())) +
-                              " --out " + Quote(dir.string()) + " > /dev/null";
+  const std::string command = std::string(OPGRAPH_APPLY_SEQUENCE) + " " + ShellQuote(ParityPath(GetParam())) +
+                              " --out " + ShellQuote(dir.string()) + " > /dev/null";
   ASSERT_EQ(std::system(command.c_str()), 0) << command;
   const Mesh ours = ReadObj((dir / "result.obj").string());
   const Mesh blender = RunBlender((dir / "rebuild_blender.py").string(), (dir / "blender.obj").string());
@@ -253,8 +239,8 @@ TEST_P(BadSequence, FailsWithOneLineAndWritesNothing) {
   if (std::string(bad.name) != "missing_file") std::ofstream(seq) << bad.text;
   const fs::path out = dir / "out";
   const fs::path err = dir / "stderr.txt";
-  const std::string command = std::string(OPGRAPH_APPLY_SEQUENCE) + " " + Quote(seq.string()) + " --out " +
-                              Quote(out.string()) + " 2> " + Quote(err.string());
+  const std::string command = std::string(OPGRAPH_APPLY_SEQUENCE) + " " + ShellQuote(seq.string()) + " --out " +
+                              ShellQuote(out.string()) + " 2> " + ShellQuote(err.string());
   const int status = std::system(command.c_str());
   ASSERT_TRUE(WIFEXITED(status));
   EXPECT_EQ(WEXITSTATUS(status), 2);

@@ -1,0 +1,25 @@
+// Checks on an evaluated sequence for geometry that real Blender would not rebuild the same,
+// shared by every producer of sequences (the zero-shot search, the synthetic corpus).
+#pragma once
+
+#include <vector>
+
+#include "core/mesh.h"
+#include "ops/params.h"
+
+namespace opgraph {
+
+// True when a step has an edge shorter than `fraction` of its bounding-box diagonal: an op at a
+// degenerate setting (an inset of zero thickness, a cap folded onto its base). Blender's
+// float32 coordinates turn such slivers' normals into noise that later ops (a bevel) amplify.
+bool HasCollapsedEdge(const std::vector<Mesh>& steps, double fraction = 1e-5);
+
+// True when a Subdivision's input has a vertex with only two edges (a Boolean leaves them where
+// a cut bends across a face): our Subdivision and Blender's disagree there
+// (docs/sequence-format.md). `steps[k]` is the mesh after operation k of `document`.
+bool SubdividesTwoEdgeVertex(const Json& document, const std::vector<Mesh>& steps);
+
+// Either of the two above (at the default fraction).
+bool BreaksReplay(const Json& document, const std::vector<Mesh>& steps);
+
+}  // namespace opgraph

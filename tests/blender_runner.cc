@@ -1,0 +1,27 @@
+#include "tests/blender_runner.h"
+
+#include <cstdlib>
+#include <fstream>
+#include <sstream>
+#include <stdexcept>
+
+#include "core/obj_io.h"
+
+namespace opgraph {
+
+std::string ShellQuote(const std::string& s) { return "'" + s + "'"; }
+
+Mesh RunBlender(const std::string& script, const std::string& out_obj) {
+  const std::string log = out_obj + ".log";
+  const std::string command = "blender -b --factory-startup --python-exit-code 1 -P " + ShellQuote(script) + " -- " +
+                              ShellQuote(out_obj) + " > " + ShellQuote(log) + " 2>&1";
+  if (std::system(command.c_str()) != 0) {
+    std::ifstream in(log);
+    std::stringstream text;
+    text << in.rdbuf();
+    throw std::runtime_error("blender failed (" + command + "):\n" + text.str());
+  }
+  return ReadObj(out_obj);
+}
+
+}  // namespace opgraph

@@ -1,0 +1,17 @@
+// Runs a rebuild_blender.py in real Blender 3.4 (headless) and reads back the mesh it wrote.
+#pragma once
+
+#include <string>
+
+#include "core/mesh.h"
+
+namespace opgraph {
+
+// A single-quoted shell word (paths here never hold quotes).
+std::string ShellQuote(const std::string& s);
+
+// Runs `script` with `-- out_obj`, its output to out_obj + ".log". Throws std::runtime_error
+// with the log when Blender fails.
+Mesh RunBlender(const std::string& script, const std::string& out_obj);
+
+}  // namespace opgraph
