@@ -1,217 +1,124 @@
-// Runs fit_sequence (the main job, zero-shot) on every model of the reference data and writes
-// the results table: geometry, Blender replay, sequence similarity to ground truth, wiring,
-// time. Usage (from the repository root, after a build):
-//   build/run_results --data ../shared/data --out out/results --doc docs/results.md [--time-budget S]
-#include <algorithm>
-#include <chrono>
-#include <cstdlib>
-#include <filesystem>
-#include <fstream>
-#include <iomanip>
-#include <iostream>
-#include <sstream>
+// Runs fit_sequence (the main job, zero-shot) on the models of one evaluation set, or all of
+// them, in parallel over models, and writes docs/results.md (docs/corpus.md has the sets).
+//   build/run_results --set all|gt-dev|synth-tune|synth-heldout|real-dev|real-tune|real-heldout
+#include <gflags/gflags.h>
 
+#include <algorithm>
+#include <atomic>
+#include <chrono>
+#include <ctime>
+#include <iostream>
+#include <mutex>
+#include <thread>
+
+#include "benchmarks/results_doc.h"
 #include "core/obj_io.h"
-#include "core/sequence_similarity.h"
-#include "core/surface_distance.h"
-#include "ops/params.h"
+
+DEFINE_string(set, "all", "the set to run: all, gt-dev, synth-tune, synth-heldout, real-dev, real-tune, real-heldout");
+DEFINE_string(data, "../shared/data", "the reference data (gt-dev, real-dev, real-train)");
+DEFINE_string(synth, "out/synth", "the synthetic corpus written by build/make_synth");
+DEFINE_string(out, "out/results", "where each model's fit_sequence outputs go (out/SET/MODEL)");
+DEFINE_string(doc, "docs/results.md", "the results page to write");
+DEFINE_string(records, "docs/results", "the folder of per-set records (SET.json) the page is rendered from");
+DEFINE_int32(time_budget, 90, "fit_sequence --time-budget per model, seconds");
+DEFINE_int32(jobs, 0, "models run at once (0: one per hardware thread)");
+DEFINE_string(commit, "", "the commit named in the records (default: git rev-parse --short HEAD)");
 
 namespace fs = std::filesystem;
-using opgraph::Json;
+using namespace opgraph;
 
 namespace {
 
-struct Row {
-  std::string set, name;
-  bool ok = false;
-  std::string error;
-  double chamfer = 0, f1_001 = 0, f1_002 = 0, normal_consistency = 0;
-  double valence4 = 0, quad = 0, area_cv = 0;
-  bool subdivided = false;
-  int ops = 0;
-  double seconds = 0;
-  double replay_distance = -1;
-  bool replay_counts_equal = false;
-  double lcs = -1, levenshtein = -1;
-  std::string sequence;
-};
-
-std::string Quote(const std::string& s) { return "'" + s + "'"; }
-
-std::vector<std::string> OpNames(const Json& document) {
-  std::vector<std::string> names;
-  for (const Json& op : document.at("operations")) names.push_back(op.at("op"));
-  return names;
-}
-
-double Median(std::vector<double> values) {
-  if (values.empty()) return NAN;
-  std::sort(values.begin(), values.end());
-  const size_t n = values.size();
-  return n % 2 ? values[n / 2] : 0.5 * (values[n / 2 - 1] + values[n / 2]);
-}
-
-double Mean(const std::vector<double>& values) {
-  double sum = 0;
-  for (double v : values) sum += v;
-  return values.empty() ? NAN : sum / values.size();
-}
-
-Row Run(const std::string& set, const std::string& name, const fs::path& input, const fs::path& truth,
-        const fs::path& fit_sequence, const fs::path& out, int budget) {
-  Row row{set, name};
-  const fs::path dir = out / name;
-  fs::remove_all(dir);
-  const std::string command = Quote(fit_sequence.string()) + " --input " + Quote(input.string()) + " --out " +
-                              Quote(dir.string()) + " --time-budget " + std::to_string(budget) + " --quiet > " +
-                              Quote((out / (name + ".log")).string()) + " 2>&1";
-  const auto start = std::chrono::steady_clock::now();
-  const int status = std::system(command.c_str());
-  row.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
-  if (status != 0) {
-    std::ifstream log(out / (name + ".log"));
-    std::getline(log, row.error);
-    return row;
+std::string Capture(const std::string& command) {
+  std::string text;
+  if (FILE* pipe = popen(command.c_str(), "r")) {
+    char buffer[256];
+    while (fgets(buffer, sizeof(buffer), pipe)) text += buffer;
+    pclose(pipe);
   }
-  const Json metrics = Json::parse(std::ifstream(dir / "metrics.json"));
-  const Json sequence = Json::parse(std::ifstream(dir / "sequence.json"));
-  row.chamfer = metrics["shape"]["chamfer"]["sum"];
-  row.f1_001 = metrics["shape"]["f1_0.01"];
-  row.f1_002 = metrics["shape"]["f1_0.02"];
-  row.normal_consistency = metrics["shape"]["normal_consistency"].is_number() ? metrics["shape"]["normal_consistency"].get<double>() : NAN;
-  row.valence4 = metrics["wiring"]["valence4_fraction"];
-  row.quad = metrics["wiring"]["quad_fraction"];
-  row.area_cv = metrics["wiring"]["face_area_cv"];
-  const std::vector<std::string> ours = OpNames(sequence);
-  row.ops = static_cast<int>(ours.size());
-  row.subdivided = std::find(ours.begin(), ours.end(), "Subdivision") != ours.end();
-  for (const std::string& op : ours) row.sequence += (row.sequence.empty() ? "" : " ") + op;
-  if (!truth.empty()) {
-    const std::vector<std::string> gt = OpNames(Json::parse(std::ifstream(truth)));
-    row.lcs = opgraph::NormalizedLcsSimilarity(ours, gt);
-    row.levenshtein = opgraph::LevenshteinSimilarity(ours, gt);
-  }
-  // Real Blender replays the script; its mesh must be ours.
-  const fs::path blender_obj = dir / "blender.obj";
-  const std::string replay = "blender -b --factory-startup --python-exit-code 1 -P " +
-                             Quote((dir / "rebuild_blender.py").string()) + " -- " + Quote(blender_obj.string()) +
-                             " > " + Quote((dir / "blender.log").string()) + " 2>&1";
-  if (std::system(replay.c_str()) == 0) {
-    const opgraph::Mesh ours_mesh = opgraph::ReadObj((dir / "result.obj").string());
-    const opgraph::Mesh blender_mesh = opgraph::ReadObj(blender_obj.string());
-    row.replay_distance = opgraph::SymmetricSurfaceDistanceRelative(ours_mesh, blender_mesh);
-    row.replay_counts_equal =
-        ours_mesh.NumVertices() == blender_mesh.NumVertices() && ours_mesh.NumFaces() == blender_mesh.NumFaces();
-  }
-  row.ok = true;
-  return row;
+  while (!text.empty() && (text.back() == '\n' || text.back() == ' ')) text.pop_back();
+  return text;
 }
 
-std::string Fixed(double value, int digits) {
-  if (!std::isfinite(value)) return "–";
-  std::ostringstream s;
-  s << std::fixed << std::setprecision(digits) << value;
-  return s.str();
-}
-
-std::string Sci(double value) {
-  if (!std::isfinite(value) || value < 0) return "–";
-  std::ostringstream s;
-  s << std::scientific << std::setprecision(1) << value;
-  return s.str();
+std::string Today() {
+  const std::time_t now = std::time(nullptr);
+  char date[16];
+  std::strftime(date, sizeof(date), "%Y-%m-%d", std::gmtime(&now));
+  return date;
 }
 
 }  // namespace
 
 int main(int argc, char** argv) {
-  fs::path data = "../shared/data", out = "out/results", doc = "docs/results.md";
-  fs::path fit_sequence = fs::path(argv[0]).parent_path() / "fit_sequence";
-  int budget = 90;
-  for (int i = 1; i + 1 < argc; i += 2) {
-    const std::string arg = argv[i];
-    if (arg == "--data") data = argv[i + 1];
-    else if (arg == "--out") out = argv[i + 1];
-    else if (arg == "--doc") doc = argv[i + 1];
-    else if (arg == "--time-budget") budget = std::atoi(argv[i + 1]);
-    else {
-      std::cerr << "run_results: unknown argument " << arg << "\n";
-      return 2;
-    }
-  }
-  if (!fs::is_directory(data / "gt-dev")) {
-    std::cerr << "run_results: no gt-dev folder under " << data << "\n";
+  gflags::SetUsageMessage("run_results [--set NAME] [--time_budget S] [--jobs N] (see --help)");
+  gflags::ParseCommandLineFlags(&argc, &argv, true);
+  if (argc > 1) {
+    std::cerr << "run_results: unexpected argument '" << std::string(argv[1]).substr(0, 80) << "'\n";
     return 2;
   }
-  fs::create_directories(out);
-  std::vector<Row> rows;
-  std::vector<fs::path> models;
-  for (const auto& entry : fs::directory_iterator(data / "gt-dev")) models.push_back(entry.path());
-  std::sort(models.begin(), models.end());
-  for (const fs::path& model : models) {
-    std::cout << "[results] gt-dev/" << model.filename().string() << " ..." << std::flush;
-    rows.push_back(Run("gt-dev", model.filename().string(), model / "model.obj", model / "sequence.json",
-                       fit_sequence, out, budget));
-    std::cout << " " << (rows.back().ok ? "Chamfer " + Sci(rows.back().chamfer) : rows.back().error) << ", "
-              << Fixed(rows.back().seconds, 1) << " s" << std::endl;
+  if (FLAGS_time_budget < 1 || FLAGS_jobs < 0) {
+    std::cerr << "run_results: --time_budget must be >= 1 and --jobs >= 0\n";
+    return 2;
   }
-  std::vector<fs::path> reals;
-  for (const auto& entry : fs::directory_iterator(data / "real-dev")) {
-    if (entry.path().extension() == ".obj") reals.push_back(entry.path());
+  std::vector<ResultsModel> models;
+  try {
+    models = ListModels(FLAGS_set, FLAGS_data, FLAGS_synth);
+  } catch (const std::exception& e) {
+    std::cerr << "run_results: " << e.what() << "\n";
+    return 2;
   }
-  std::sort(reals.begin(), reals.end());
-  for (const fs::path& model : reals) {
-    std::cout << "[results] real-dev/" << model.stem().string() << " ..." << std::flush;
-    rows.push_back(Run("real-dev", model.stem().string(), model, "", fit_sequence, out, budget));
-    std::cout << " " << (rows.back().ok ? "Chamfer " + Sci(rows.back().chamfer) : rows.back().error) << ", "
-              << Fixed(rows.back().seconds, 1) << " s" << std::endl;
-  }
+  RunOptions options;
+  options.fit_sequence = fs::path(argv[0]).parent_path() / "fit_sequence";
+  options.out = FLAGS_out;
+  options.time_budget = FLAGS_time_budget;
+  const int jobs = FLAGS_jobs > 0 ? FLAGS_jobs : std::max(1u, std::thread::hardware_concurrency());
+  for (const std::string& set : ResultsSetNames()) fs::create_directories(options.out / set);
 
-  std::ostringstream md;
-  md << "# fit_sequence results on the reference data\n\n"
-     << "Made by `bash benchmarks/run_results.sh` (= `build/run_results --data ../shared/data --out out/results "
-        "--doc docs/results.md --time-budget "
-     << budget << "`), which runs `fit_sequence --input MODEL --out DIR --time-budget " << budget
-     << "` (zero-shot, default seed 1) on every model, replays each `rebuild_blender.py` in real Blender, and "
-        "compares.\n\n"
-     << "Geometry on the target's unit bounding box (longest side 1): Chamfer = point-to-surface mean distance, both "
-        "directions summed; F1 at 0.01 and 0.02; NC = normal consistency. Replay = symmetric point-to-surface "
-        "distance between `result.obj` and the mesh Blender builds from `rebuild_blender.py`, relative to the "
-        "bounding-box diagonal. LCS / Lev = normalised LCS and Levenshtein similarity of our op names to the "
-        "ground-truth sequence. V4 = fraction of valence-4 vertices; area CV = face-area coefficient of variation. "
-        "Time = wall time of the whole command on this 2-core machine.\n\n";
-  for (const std::string set : {"gt-dev", "real-dev"}) {
-    md << "## " << set << "\n\n| model | Chamfer | F1@0.01 | F1@0.02 | NC | ops | LCS | Lev | V4 | quads | area CV | "
-          "replay | time s | sequence |\n|---|---|---|---|---|---|---|---|---|---|---|---|---|---|\n";
-    std::vector<double> chamfer, f1, nc, lcs, lev, seconds, v4_smooth, area_cv;
-    int replay_ok = 0, count = 0;
-    for (const Row& r : rows) {
-      if (r.set != set) continue;
-      ++count;
-      if (!r.ok) {
-        md << "| " << r.name << " | failed: " << r.error << " |||||||||||||\n";
-        continue;
-      }
-      chamfer.push_back(r.chamfer), f1.push_back(r.f1_001), seconds.push_back(r.seconds), area_cv.push_back(r.area_cv);
-      if (std::isfinite(r.normal_consistency)) nc.push_back(r.normal_consistency);
-      if (r.lcs >= 0) lcs.push_back(r.lcs), lev.push_back(r.levenshtein);
-      if (r.subdivided) v4_smooth.push_back(r.valence4);
-      const bool replay = r.replay_distance >= 0 && r.replay_distance < 1e-6 && r.replay_counts_equal;
-      replay_ok += replay;
-      md << "| " << r.name << " | " << Fixed(r.chamfer, 4) << " | " << Fixed(r.f1_001, 3) << " | "
-         << Fixed(r.f1_002, 3) << " | " << Fixed(r.normal_consistency, 3) << " | " << r.ops << " | "
-         << (r.lcs >= 0 ? Fixed(r.lcs, 2) : "–") << " | " << (r.levenshtein >= 0 ? Fixed(r.levenshtein, 2) : "–")
-         << " | " << Fixed(r.valence4, 2) << " | " << Fixed(r.quad, 2) << " | " << Fixed(r.area_cv, 2) << " | "
-         << Sci(r.replay_distance) << (replay ? "" : " ✗") << " | " << Fixed(r.seconds, 1) << " | " << r.sequence
-         << " |\n";
+  // Smaller sets first, so a run cut short still leaves whole sets on record.
+  std::stable_sort(models.begin(), models.end(), [&](const ResultsModel& a, const ResultsModel& b) {
+    auto size = [&](const std::string& set) {
+      return std::count_if(models.begin(), models.end(), [&](const ResultsModel& m) { return m.set == set; });
+    };
+    return size(a.set) < size(b.set);
+  });
+  const std::string commit = FLAGS_commit.empty() ? Capture("git rev-parse --short HEAD 2>/dev/null") : FLAGS_commit;
+  std::vector<ResultsRow> rows(models.size());
+  std::vector<bool> finished_rows(models.size(), false);
+  std::atomic<size_t> next{0}, done{0};
+  std::mutex print;
+  // Saves `set`'s record and re-renders the page once all its models are done (under `print`).
+  auto save_if_complete = [&](const std::string& set) {
+    SetRecord record{set, commit.empty() ? "unknown" : commit, Today(), FLAGS_time_budget, jobs, {}};
+    for (size_t k = 0; k < models.size(); ++k) {
+      if (models[k].set != set) continue;
+      if (!finished_rows[k]) return;
+      record.rows.push_back(rows[k]);
     }
-    md << "\n**" << set << " summary:** median Chamfer " << Fixed(Median(chamfer), 4) << ", median F1@0.01 "
-       << Fixed(Median(f1), 3) << ", median NC " << Fixed(Median(nc), 3);
-    if (!lcs.empty()) md << ", mean LCS " << Fixed(Mean(lcs), 2) << ", mean Levenshtein " << Fixed(Mean(lev), 2);
-    md << ", valence-4 fraction on subdivided results (median) " << Fixed(Median(v4_smooth), 3)
-       << ", face-area CV median " << Fixed(Median(area_cv), 2) << ", median time " << Fixed(Median(seconds), 1)
-       << " s, Blender replay within 1e-6 with equal counts: " << replay_ok << " of " << count << ".\n\n";
+    std::sort(record.rows.begin(), record.rows.end(), [](const ResultsRow& a, const ResultsRow& b) { return a.name < b.name; });
+    SaveSetRecord(record, FLAGS_records);
+    WriteFileAtomic(FLAGS_doc, ResultsMarkdown(LoadSetRecords(FLAGS_records)));
+    std::cout << "[results] " << set << " done; wrote " << FLAGS_doc << std::endl;
+  };
+  const auto start = std::chrono::steady_clock::now();
+  std::vector<std::thread> workers;
+  for (int j = 0; j < jobs; ++j) {
+    workers.emplace_back([&] {
+      for (size_t k; (k = next++) < models.size();) {
+        rows[k] = RunModel(models[k], options);
+        const double elapsed = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+        const size_t finished = ++done;
+        std::lock_guard<std::mutex> lock(print);
+        finished_rows[k] = true;
+        std::cout << "[results " << finished << "/" << models.size() << ", " << static_cast<int>(elapsed) << " s] "
+                  << models[k].set << "/" << models[k].name << ": "
+                  << (rows[k].ok ? "Chamfer " + std::to_string(rows[k].chamfer) : "failed: " + rows[k].error) << ", "
+                  << static_cast<int>(rows[k].seconds) << " s" << std::endl;
+        save_if_complete(models[k].set);
+      }
+    });
   }
-  opgraph::WriteFileAtomic(doc.string(), md.str());
-  std::cout << "[results] wrote " << doc << "\n";
+  for (std::thread& worker : workers) worker.join();
+
+  for (const SetRecord& record : LoadSetRecords(FLAGS_records)) std::cout << SummaryRow(record);
   return 0;
 }

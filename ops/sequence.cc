@@ -94,8 +94,6 @@ Mesh ApplyOp(Op* op, double gate, const Mesh& input) {
   Mesh next;
   op->Evaluate(op->params().data(), gate, input.vertices, &next.vertices);
   next.faces = op->OutputFaces(gate);
-  const std::string problem = next.Validate();
-  if (!problem.empty()) throw std::runtime_error("result invalid: " + problem);
   return next;
 }
 
@@ -108,11 +106,9 @@ std::vector<Mesh> EvaluateSequence(Sequence* sequence) {
       current = ApplyOp(&op, sequence->gates[i], current);
     } catch (const FieldError& e) {
       throw SequenceError(OpLabel(i, op.Name()) + ": field '" + e.field() + "': " + e.what());
-    } catch (const SequenceError&) {
-      throw;
-    } catch (const std::runtime_error& e) {
-      throw SequenceError(OpLabel(i, op.Name()) + ": " + e.what());
     }
+    const std::string problem = current.Validate();
+    if (!problem.empty()) throw SequenceError(OpLabel(i, op.Name()) + ": result invalid: " + problem);
     steps.push_back(current);
   }
   return steps;

@@ -28,7 +28,7 @@ Sequence LoadSequence(const std::string& path);
 Json SequenceToJson(const Sequence& sequence);
 
 // One step: `op`'s topology pass on `input`, then its geometry pass at `gate`. Throws FieldError
-// when a target does not exist, std::runtime_error when the result is invalid.
+// when a target does not exist; the result is not validated (Mesh::Validate).
 Mesh ApplyOp(Op* op, double gate, const Mesh& input);
 
 // Runs every op's topology and geometry pass with doubles. Returns the mesh after each step

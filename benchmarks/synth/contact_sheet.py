@@ -64,8 +64,8 @@ scene.render.engine = "BLENDER_WORKBENCH"
 scene.display.shading.light = "STUDIO"
 scene.display.shading.show_cavity = True
 scene.display.shading.show_object_outline = True
-scene.render.resolution_x = 220 * columns
-scene.render.resolution_y = int(220 * columns * height / width) if width >= height else 220 * rows
+scene.render.resolution_x = 180 * columns
+scene.render.resolution_y = int(180 * columns * height / width) if width >= height else 180 * rows
 if height > width:
     scene.render.resolution_x = int(scene.render.resolution_y * width / height)
 scene.render.filepath = out_png

@@ -47,7 +47,7 @@ bool Profile(Draft* draft, Random* random, int axis) {
   for (int k = 0; k < shaped; ++k) {
     const build::VertexTarget loop = draft->LoopTarget(axis, levels[order[k]]);
     if (loop.expect < 3) continue;
-    const int kind = random->Weighted({0.7, 0.15, 0.15});
+    const int kind = random->Weighted({0.64, 0.16, 0.2});
     Json op;
     if (kind == 0) {
       Vec3d scale = Vec3d::Constant(Factor(random, 0.5, 1.5, 0.12));
@@ -71,7 +71,7 @@ bool Profile(Draft* draft, Random* random, int axis) {
 }
 
 bool Deform(Draft* draft, Random* random, int main_axis) {
-  const int kind = random->Weighted({1, 1, 1, 0.8});
+  const int kind = random->Weighted({2.0, 1.2, 1.1, 1.5});
   const build::Deform deform = static_cast<build::Deform>(kind);
   int axis = main_axis;
   // Bend about X or Y deforms along Z, about Z along X (ops/simple_deform.h).

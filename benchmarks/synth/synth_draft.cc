@@ -18,6 +18,7 @@ bool Draft::TryAppend(const std::vector<Json>& ops) {
     for (const Json& entry : ops) {
       std::unique_ptr<Op> op = CreateOp(entry.at("op"), entry.at("params"));
       added.push_back(ApplyOp(op.get(), 1.0, added.empty() ? mesh() : added.back()));
+      if (!added.back().Validate().empty()) return false;
     }
   } catch (const std::exception&) {  // the engine refuses the op here: the draft stays as it is
     return false;

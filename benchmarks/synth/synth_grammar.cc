@@ -12,7 +12,7 @@ namespace {
 void Turned(Draft* d, Random* r) {
   ScaleBlock(d, r, Proportion::kColumn);
   Profile(d, r, 2);
-  if (r->Chance(0.3)) Deform(d, r, 2);
+  if (r->Chance(0.5)) Deform(d, r, 2);
   if (r->Chance(0.55)) InsetExtrude(d, r, /*deep_cavity=*/true);
   if (r->Chance(0.25)) BevelFinish(d, r);
   if (r->Chance(0.7)) SubdivisionFinish(d, r);
@@ -33,9 +33,32 @@ void HardSurface(Draft* d, Random* r) {
       default: Chain(d, r); break;
     }
   }
-  if (r->Chance(0.2)) Deform(d, r, r->Int(0, 2));
+  if (r->Chance(0.25)) Deform(d, r, r->Int(0, 2));
   if (r->Chance(0.45)) BevelFinish(d, r);
   if (r->Chance(0.3)) SubdivisionFinish(d, r);
+}
+
+// Detailed assemblies: a shaped block with several features, finished and posed (the long
+// sequences of the corpus).
+void Detailed(Draft* d, Random* r) {
+  ScaleBlock(d, r, Proportion::kAny);
+  Profile(d, r, r->Int(0, 2));
+  const int features = r->Int(3, 6);
+  for (int k = 0; k < features; ++k) {
+    switch (r->Weighted({1, 1, 0.5, 0.7, 0.5, 0.6, 0.4})) {
+      case 0: ExtrudeFace(d, r); break;
+      case 1: InsetExtrude(d, r, false); break;
+      case 2: Panels(d, r); break;
+      case 3: BooleanFeature(d, r, true); break;
+      case 4: BooleanFeature(d, r, false); break;
+      case 5: Chain(d, r); break;
+      default: Facets(d, r); break;
+    }
+  }
+  if (r->Chance(0.3)) MirrorPair(d, r);
+  if (r->Chance(0.5)) BevelFinish(d, r);
+  if (r->Chance(0.4)) SubdivisionFinish(d, r);
+  if (r->Chance(0.5)) Pose(d, r);
 }
 
 // Tables, benches, chairs, cabinets on legs.
@@ -54,6 +77,7 @@ void Limbs(Draft* d, Random* r) {
   if (r->Chance(0.4)) Profile(d, r, 0);
   const int chains = r->Int(1, 2);
   for (int k = 0; k < chains; ++k) Chain(d, r);
+  if (r->Chance(0.2)) Deform(d, r, 0);
   if (r->Chance(0.5)) MirrorPair(d, r);
   if (r->Chance(0.55)) SubdivisionFinish(d, r);
 }
@@ -72,7 +96,7 @@ void Faceted(Draft* d, Random* r) {
   ScaleBlock(d, r, Proportion::kAny);
   const int facets = r->Int(1, 3);
   for (int k = 0; k < facets; ++k) Facets(d, r);
-  if (r->Chance(0.25)) Deform(d, r, 2);
+  if (r->Chance(0.35)) Deform(d, r, 2);
   if (r->Chance(0.2)) BevelFinish(d, r);
 }
 
@@ -95,14 +119,15 @@ void House(Draft* d, Random* r) {
 }
 
 using Recipe = void (*)(Draft*, Random*);
-const Recipe kRecipes[] = {Turned, HardSurface, Furniture, Limbs, Csg, Faceted, Deformed, House};
-const std::vector<double> kRecipeWeights = {1.2, 1.5, 0.9, 1.0, 1.0, 0.8, 0.8, 0.6};
+const Recipe kRecipes[] = {Turned, HardSurface, Furniture, Limbs, Csg, Faceted, Deformed, House, Detailed};
+const std::vector<double> kRecipeWeights = {1.2, 1.3, 0.9, 0.8, 1.1, 0.8, 1.4, 0.6, 0.9};
 
 }  // namespace
 
 const std::vector<std::string>& RecipeNames() {
   static const std::vector<std::string> kNames = {"turned", "hard_surface", "furniture", "limbs",
-                                                  "csg",    "faceted",      "deformed",  "house"};
+                                                  "csg",    "faceted",      "deformed",  "house",
+                                                  "detailed"};
   return kNames;
 }
 
@@ -112,12 +137,15 @@ std::string SynthOptions::Check() const {
   return "";
 }
 
-SynthModel SampleModel(uint64_t set_seed, int index, const SynthOptions& options) {
+SynthModel SampleModel(uint64_t set_seed, int index, const SynthOptions& options, int redraw) {
   SynthModel model;
-  Random random(ModelSeed(set_seed, index));
+  Random random(ModelSeed(set_seed, index) + static_cast<uint64_t>(redraw) * 0x9e3779b97f4a7c15ULL);
+  int recipe = random.Weighted(kRecipeWeights);
   while (model.attempts < options.max_attempts) {
+    // The recipe is kept across rejections (so the set's mix of kinds follows the weights, not
+    // how often each kind passes the checks), and redrawn only after many.
+    if (model.attempts > 0 && model.attempts % 50 == 0) recipe = random.Weighted(kRecipeWeights);
     ++model.attempts;
-    const int recipe = random.Weighted(kRecipeWeights);
     Draft draft;
     kRecipes[recipe](&draft, &random);
     if (random.Chance(0.25)) Pose(&draft, &random);

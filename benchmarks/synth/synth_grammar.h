@@ -31,8 +31,9 @@ struct SynthModel {
   std::map<std::string, int> rejections;  // why the others were rejected
 };
 
-// Samples model `index` of the set whose seed is `set_seed`.
-SynthModel SampleModel(uint64_t set_seed, int index, const SynthOptions& options);
+// Samples model `index` of the set whose seed is `set_seed`. `redraw` > 0 draws the index's
+// next sample instead (make_synth --verify_blender replaces a model Blender does not rebuild).
+SynthModel SampleModel(uint64_t set_seed, int index, const SynthOptions& options, int redraw = 0);
 
 // Recipe names, in the grammar's order.
 const std::vector<std::string>& RecipeNames();

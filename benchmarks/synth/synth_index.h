@@ -19,6 +19,9 @@ struct IndexEntry {
   int vertices = 0, faces = 0, genus = 0, parts = 0, attempts = 0;
   bool held_out = false;
   std::map<std::string, int> rejections;
+  double blender_distance = -1;  // of the diagonal; -1: not verified, -2: Blender failed
+  bool blender_counts_equal = false;
+  std::vector<double> replaced;  // Blender distances of earlier samples of this index it did not rebuild
 };
 
 std::string ModelName(int index);  // "synth_007"

@@ -145,7 +145,10 @@ bool BooleanFeature(Draft* draft, Random* random, bool difference) {
   // The primitive's own axis (+Z) along `axis`.
   if (axis == 0) args.rotation_deg = Vec3d(0, 90, 0);
   if (axis == 1) args.rotation_deg = Vec3d(90, 0, 0);
-  if (args.primitive != build::Primitive::kCylinder && random->Chance(0.4)) args.rotation_deg.z() = random->Uniform(10, 45);
+  // Turned about its own axis: prisms by a visible angle; cylinders slightly, so that no vertex of
+  // theirs lies exactly on a face diagonal of the block (a degenerate contact the engine refuses).
+  args.rotation_deg.z() = args.primitive == build::Primitive::kCylinder || random->Chance(0.6) ? random->Uniform(2, 9)
+                                                                                               : random->Uniform(10, 45);
   const double across = random->Uniform(0.15, 0.5);
   Vec3d size;
   size.x() = across * std::min(extent[u], extent[v]);
@@ -154,7 +157,7 @@ bool BooleanFeature(Draft* draft, Random* random, bool difference) {
   location[u] += random->Uniform(-0.3, 0.3) * extent[u];
   location[v] += random->Uniform(-0.3, 0.3) * extent[v];
   const double face = side > 0 ? hi[axis] : lo[axis];
-  const int kind = random->Weighted({difference ? 1.0 : 0.0, 1.0});
+  const int kind = random->Weighted({difference ? 1.5 : 0.0, 1.0});
   if (kind == 0) {  // a hole right through
     size.z() = 1.5 * extent[axis];
     location[axis] = centre[axis];

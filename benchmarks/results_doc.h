@@ -1,0 +1,30 @@
+// The results document: each set's rows kept as docs/results/<set>.json (with the commit,
+// date and budget of the run that made them), and docs/results.md rendered from every set on
+// record, so a run of one set refreshes its section and leaves the others as they were.
+#pragma once
+
+#include <filesystem>
+#include <string>
+#include <vector>
+
+#include "benchmarks/results_run.h"
+
+namespace opgraph {
+
+struct SetRecord {
+  std::string set, commit, date;
+  int time_budget = 0, jobs = 0;
+  std::vector<ResultsRow> rows;
+};
+
+// Writes `record` to `dir`/<set>.json (atomically).
+void SaveSetRecord(const SetRecord& record, const std::filesystem::path& dir);
+// Every set on record in `dir`, in ResultsSetNames() order.
+std::vector<SetRecord> LoadSetRecords(const std::filesystem::path& dir);
+
+// The one-line summary numbers of a set, as the summary table shows them.
+std::string SummaryRow(const SetRecord& record);
+// docs/results.md.
+std::string ResultsMarkdown(const std::vector<SetRecord>& records);
+
+}  // namespace opgraph

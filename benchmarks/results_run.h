@@ -1,0 +1,42 @@
+// One model of a results run: fit_sequence (zero-shot) on it, real Blender replaying the
+// written script, and the numbers of the results table.
+#pragma once
+
+#include <filesystem>
+#include <string>
+
+#include "benchmarks/results_sets.h"
+#include "ops/params.h"
+
+namespace opgraph {
+
+struct ResultsRow {
+  std::string set, name;
+  bool ok = false;
+  std::string error;
+  double chamfer = 0, f1_001 = 0, f1_002 = 0, normal_consistency = 0;
+  double valence4 = 0, quad = 0, area_cv = 0;
+  bool subdivided = false, search_complete = true;
+  int ops = 0;
+  double seconds = 0;
+  double replay_distance = -1;  // of the diagonal; < 0: Blender failed
+  bool replay_counts_equal = false;
+  double lcs = -1, levenshtein = -1;  // < 0: no ground truth
+  std::string sequence;               // our op names
+
+  bool ReplayOk() const { return replay_distance >= 0 && replay_distance < 1e-6 && replay_counts_equal; }
+};
+
+Json RowToJson(const ResultsRow& row);
+ResultsRow RowFromJson(const Json& json);
+
+struct RunOptions {
+  std::filesystem::path fit_sequence;  // the binary
+  std::filesystem::path out;           // per-model folders go to out / set / name
+  int time_budget = 90;
+};
+
+// Runs the model end to end; a failure of fit_sequence is a row with `error` set.
+ResultsRow RunModel(const ResultsModel& model, const RunOptions& options);
+
+}  // namespace opgraph
