@@ -8,6 +8,7 @@
 #include <chrono>
 #include <ctime>
 #include <iostream>
+#include <map>
 #include <mutex>
 #include <thread>
 
@@ -75,11 +76,10 @@ int main(int argc, char** argv) {
   for (const std::string& set : ResultsSetNames()) fs::create_directories(options.out / set);
 
   // Smaller sets first, so a run cut short still leaves whole sets on record.
+  std::map<std::string, int> set_sizes;
+  for (const ResultsModel& model : models) ++set_sizes[model.set];
   std::stable_sort(models.begin(), models.end(), [&](const ResultsModel& a, const ResultsModel& b) {
-    auto size = [&](const std::string& set) {
-      return std::count_if(models.begin(), models.end(), [&](const ResultsModel& m) { return m.set == set; });
-    };
-    return size(a.set) < size(b.set);
+    return set_sizes[a.set] < set_sizes[b.set];
   });
   const std::string commit = FLAGS_commit.empty() ? Capture("git rev-parse --short HEAD 2>/dev/null") : FLAGS_commit;
   std::vector<ResultsRow> rows(models.size());
