@@ -3,7 +3,7 @@
 //              [--samples N] [--threads N] [--quiet]
 // Without --init (the main job): recovers a design sequence for TARGET (a mesh or point cloud,
 // any format io/read_input reads) from scratch with the zero-shot controller
-// (solver/zero_shot.h). With --init: fits every continuous parameter of the sequence skeleton
+// (search/zero_shot.h). With --init: fits every continuous parameter of the sequence skeleton
 // SEQ.json (ops and discrete choices fixed; its parameters are the start).
 // Writes DIR/sequence.json, DIR/result.obj (in the input's frame and units),
 // DIR/steps/NN_<op>.obj, DIR/rebuild_blender.py, DIR/metrics.json and DIR/log.txt (the
@@ -22,7 +22,7 @@
 #include "core/metrics.h"
 #include "core/obj_io.h"
 #include "solver/fitter.h"
-#include "solver/zero_shot.h"
+#include "search/zero_shot.h"
 
 namespace {
 

@@ -11,7 +11,7 @@
 #include "apps/sequence_outputs.h"
 #include "io/pcl_cloud.h"
 #include "solver/target.h"
-#include "solver/zero_shot.h"
+#include "search/zero_shot.h"
 
 int main(int argc, char** argv) {
   pcl::PointCloud<pcl::PointXYZ> cloud;

@@ -15,7 +15,7 @@
 #include <ceres/cost_function.h>
 #include <ceres/sized_cost_function.h>
 
-#include "solver/program.h"
+#include "program/program.h"
 
 namespace opgraph {
 
@@ -77,7 +77,7 @@ class BooleanWeightedCost : public ScaledCorrespondenceCost {
   bool boolean_side_;
 };
 
-// A mixed branch's terms (solver/program.h): s = sqrt(w_k), w = softmax(alpha) of the branch's
+// A mixed branch's terms (program/program.h): s = sqrt(w_k), w = softmax(alpha) of the branch's
 // logit block, for a correspondence on option k's surface.
 class BranchWeightedCost : public ScaledCorrespondenceCost {
  public:

@@ -27,7 +27,7 @@
 
 #include "core/nearest.h"
 #include "residuals/correspondence_cost.h"
-#include "solver/program.h"
+#include "program/program.h"
 
 namespace opgraph {
 

@@ -75,7 +75,7 @@ struct BooleanWeightTerms {
   std::vector<SurfaceCorrespondence> boolean_to_target, target_to_boolean;
 };
 
-// A mixed branch's terms (solver/program.h): per option, output-to-target samples of its own
+// A mixed branch's terms (program/program.h): per option, output-to-target samples of its own
 // surface and each target point's closest point on it, every residual scaled by
 // sqrt(w_option), so the loss mixes the options' Chamfer terms.
 struct MixedBranchTerms {

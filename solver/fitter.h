@@ -41,7 +41,7 @@
 #include <ceres/problem.h>
 
 #include "residuals/correspondence_cost.h"
-#include "solver/program.h"
+#include "program/program.h"
 #include "solver/target.h"
 
 namespace opgraph {

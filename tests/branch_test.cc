@@ -1,4 +1,4 @@
-// Softmax branch weights for discrete choices (solver/program.h): the Jacobian columns of the
+// Softmax branch weights for discrete choices (program/program.h): the Jacobian columns of the
 // branch logits against central finite differences, and fits that must pick the mirror axis a
 // known sequence used and recover its shape.
 #include <gtest/gtest.h>

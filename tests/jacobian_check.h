@@ -7,7 +7,7 @@
 #include <string>
 #include <vector>
 
-#include "solver/program.h"
+#include "program/program.h"
 
 namespace opgraph {
 

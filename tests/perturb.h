@@ -5,7 +5,7 @@
 
 #include <cstdint>
 
-#include "solver/program.h"
+#include "program/program.h"
 
 namespace opgraph {
 

@@ -10,7 +10,7 @@
 
 #include "core/nearest.h"
 #include "residuals/correspondence_cost.h"
-#include "solver/program.h"
+#include "program/program.h"
 #include "tests/jacobian_check.h"
 
 namespace opgraph {

@@ -1,7 +1,7 @@
 // The zero-shot controller on shapes built by known sequences (not the development models),
 // and the edit round trip: a parameter changed in a produced sequence.json changes the mesh
 // only as that op implies.
-#include "solver/zero_shot.h"
+#include "search/zero_shot.h"
 
 #include <gtest/gtest.h>
 #include <sys/wait.h>

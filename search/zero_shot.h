@@ -12,7 +12,9 @@
 // A proposal is accepted when the data loss falls by more than `min_relative_gain` per op it
 // adds, the price of a longer sequence. During the search ops act in the cube's own frame
 // (cube -> loop cuts -> Scale -> ridge -> deformations -> details -> Subdivision -> Rotate ->
-// Translate), so element selectors stay valid while the fit moves the global pose.
+// Translate), so element selectors stay valid while the fit moves the global pose
+// (search/layout.h). The search's parts: proposal families one a file (search/proposals.h), the
+// policy (search/policy.h), the fits (search/evaluator.h), the finishing steps (search/finish.h).
 #pragma once
 
 #include <cstdint>
@@ -21,6 +23,7 @@
 #include <vector>
 
 #include "ops/params.h"
+#include "residuals/correspondence_cost.h"
 #include "solver/fitter.h"
 #include "solver/target.h"
 

@@ -1,4 +1,4 @@
-#include "solver/program.h"
+#include "program/program.h"
 
 #include <algorithm>
 #include <cmath>

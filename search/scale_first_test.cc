@@ -1,4 +1,4 @@
-#include "solver/scale_first.h"
+#include "search/scale_first.h"
 
 #include <gtest/gtest.h>
 

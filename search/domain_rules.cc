@@ -1,0 +1,42 @@
+#include "search/domain_rules.h"
+
+#include <limits>
+#include <stdexcept>
+
+#include "core/geometry.h"
+#include "ops/op.h"
+
+namespace opgraph {
+namespace {
+
+// Index of `op`'s parameter `name` in its fitted parameter block.
+int ParamIndex(const Json& op, const std::string& name) {
+  const std::unique_ptr<Op> created = CreateOp(op.at("op"), op.at("params"));
+  const std::vector<ParamSpec>& specs = created->specs();
+  for (int i = 0; i < static_cast<int>(specs.size()); ++i) {
+    if (specs[i].name == name) return i;
+  }
+  throw std::logic_error(op.at("op").get<std::string>() + " has no parameter " + name);
+}
+
+}  // namespace
+
+FitterOptions WithDomainRules(FitterOptions options, const Json& document, double min_half_extent) {
+  constexpr double kMaxTilt = kPi / 4;
+  constexpr double kInf = std::numeric_limits<double>::infinity();
+  const Json& ops = document.at("operations");
+  for (int k = 0; k < static_cast<int>(ops.size()); ++k) {
+    if (ops[k].at("op") == "Extrude") {
+      for (const char* tilt : {"tilt_u", "tilt_v"}) {
+        options.domain_rules.push_back({k, ParamIndex(ops[k], tilt), -kMaxTilt, kMaxTilt, 1.0});
+      }
+      options.domain_rules.push_back({k, ParamIndex(ops[k], "width"), 0.1, 10.0, 1.0});
+    }
+    if (ops[k].at("op") == "Inset") {
+      options.domain_rules.push_back({k, ParamIndex(ops[k], "thickness"), 0.01 * min_half_extent, kInf, 1.0});
+    }
+  }
+  return options;
+}
+
+}  // namespace opgraph

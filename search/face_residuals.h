@@ -1,0 +1,30 @@
+// Residual analysis per cage face: target samples, brought into the cube's frame, assigned to
+// the nearest cage face (by centroid), split into those far outside and far inside along its
+// normal.
+#pragma once
+
+#include <vector>
+
+#include "core/mesh.h"
+#include "search/layout.h"
+#include "solver/target.h"
+
+namespace opgraph {
+
+struct FaceResiduals {
+  Mesh cage;                     // the layout's mesh before Subdivision and the pose
+  std::vector<Vec3d> centroids;  // #faces
+  std::vector<Vec3d> normals;    // #faces, unit
+  std::vector<double> areas;     // #faces
+  // Per face: distances along the normal of the samples beyond the threshold outside and inside.
+  std::vector<std::vector<double>> outside, inside;
+  // Per face: mean squared distance of the outside samples from the face's normal line.
+  std::vector<double> outside_spread;
+  size_t num_samples = 0;  // about the number of samples analysed
+};
+
+// Samples beyond 4% of the posed cube's diagonal count. Throws what the sequence's evaluation
+// throws.
+FaceResiduals ComputeFaceResiduals(const Target& target, const Layout& layout);
+
+}  // namespace opgraph

@@ -1,0 +1,122 @@
+#include "search/finish.h"
+
+#include <limits>
+#include <ostream>
+#include <sstream>
+
+#include "core/metrics.h"
+#include "ops/replay_guards.h"
+#include "ops/sequence.h"
+#include "search/scale_first.h"
+
+namespace opgraph {
+namespace {
+
+// Drops ops the result does not need: each op in turn (last first) is removed when the sequence
+// without it still evaluates and its Chamfer distance to the target grows by under 2%.
+Json Simplify(Evaluator* evaluator, Json document) {
+  MetricsOptions metrics_options;
+  metrics_options.num_samples = 3000;
+  metrics_options.seed = evaluator->options().seed;
+  auto chamfer = [&](const Json& candidate) {
+    try {
+      Sequence sequence = ParseSequence(candidate);
+      const Mesh result = EvaluateSequence(&sequence).back();
+      return ComputeShapeMetrics(result, evaluator->target().shape(), metrics_options).chamfer.Sum();
+    } catch (const std::runtime_error&) {
+      return std::numeric_limits<double>::infinity();  // the ops after it need the removed op
+    }
+  };
+  double current = chamfer(document);
+  for (int k = static_cast<int>(document["operations"].size()) - 1; k >= 0; --k) {
+    if (document["operations"].size() == 1) break;
+    Json candidate = document;
+    const std::string name = candidate["operations"][k]["op"];
+    candidate["operations"].erase(static_cast<size_t>(k));
+    const double without = chamfer(candidate);
+    if (without <= current * 1.02 + 1e-7) {
+      std::ostringstream line;
+      line << "simplify: removed op " << k << " (" << name << "): Chamfer " << current << " -> " << without;
+      evaluator->Note(line.str());
+      document = candidate;
+      current = without;
+    }
+  }
+  return document;
+}
+
+// The document with the scale moved first (as modellers order it) when it builds the same
+// mesh: equal counts and every vertex on one of the original's. (A loop cut's seed edge can be
+// another edge of the same ring after the scale, which only reorders the new vertices.)
+Json ScaleFirstIfSame(const Json& document, double diagonal) {
+  const Json reordered = ScaleFirst(document);
+  if (reordered == document) return document;
+  try {
+    Sequence original_sequence = ParseSequence(document), reordered_sequence = ParseSequence(reordered);
+    const Mesh original = EvaluateSequence(&original_sequence).back();
+    const Mesh moved = EvaluateSequence(&reordered_sequence).back();
+    if (moved.NumVertices() != original.NumVertices() || moved.NumFaces() != original.NumFaces()) return document;
+    const double tolerance = 1e-9 * (diagonal + 1.0);
+    for (const Vec3d& p : moved.vertices) {
+      bool found = false;
+      for (const Vec3d& q : original.vertices) {
+        if ((p - q).squaredNorm() <= tolerance * tolerance) {
+          found = true;
+          break;
+        }
+      }
+      if (!found) return document;
+    }
+    return reordered;
+  } catch (const std::runtime_error&) {
+    return document;
+  }
+}
+
+}  // namespace
+
+ZeroShotResult Finish(Evaluator* evaluator, const Trial& best) {
+  const double min_half_extent = best.layout.half_extent.minCoeff();
+  double loss = best.loss;
+  const Json searched = best.layout.Document();
+  Json document = searched;
+  try {
+    Sequence sequence = ParseSequence(searched);
+    const FitSummary summary = evaluator->FitGates(&sequence, searched, min_half_extent);
+    Json fitted = SequenceToJson(sequence);
+    Sequence replay = ParseSequence(fitted);
+    const bool breaks_replay = BreaksReplay(fitted, EvaluateSequence(&replay));
+    // Pruning must not undo what the search paid for.
+    if (!breaks_replay && summary.final_loss <= best.loss * (1 + evaluator->options().min_relative_gain)) {
+      document = fitted;
+      loss = summary.final_loss;
+    }
+    std::ostringstream line;
+    line << "prune: " << summary.pruned_ops.size() << " op(s) below the gate threshold: loss " << best.loss
+         << " -> " << summary.final_loss << (document == fitted ? " accepted" : " rejected");
+    evaluator->Note(line.str());
+  } catch (const std::runtime_error& e) {
+    evaluator->Note(std::string("final gate fit failed, kept the searched sequence: ") + e.what());
+  }
+  if (document == searched) {  // polish the searched sequence with more samples
+    const Trial polished = evaluator->Fit(best.layout, FitPrecision::kFinal);
+    if (polished.ok) document = polished.layout.Document(), loss = polished.loss;
+  }
+  document = Simplify(evaluator, document);
+  document = ScaleFirstIfSame(document, 2.0 * best.layout.half_extent.norm());
+  ZeroShotResult result;
+  result.sequence = document;
+  result.loss = loss;
+  result.num_fits = evaluator->num_fits();
+  result.seconds = evaluator->Seconds();
+  result.search_complete = !evaluator->budget_ended_search();
+  if (!result.search_complete) evaluator->Note("the time budget ended the search before every proposal was tried");
+  result.decisions = evaluator->decisions();
+  std::ostringstream line;
+  line << "final: " << document["operations"].size() << " ops, loss " << loss << ", " << result.num_fits << " fits, "
+       << result.seconds << " s";
+  evaluator->Note(line.str());
+  return result;
+}
+
+}  // namespace opgraph

@@ -1,0 +1,69 @@
+#include "search/layout.h"
+
+#include "ops/builders.h"
+
+namespace opgraph {
+namespace {
+
+// A loop lies in a plane across its cut axis, so scaling along that axis about the loop's
+// median does nothing; the fit leaves it drifting (to 1e4 and more), and Blender's float
+// coordinates would turn that into real offsets. Pin it to 1 where the box holds one loop
+// (narrower than the cut spacing); for several loops it spaces them and is kept.
+void PinFlatLoopScales(std::vector<Json>* part) {
+  double spacing = 0;
+  for (Json& op : *part) {
+    if (op["op"] == "LoopCut") spacing = 2.0 / (op["params"]["cuts"].get<double>() + 1);
+    if (op["op"] != "EdgeLoopAffineScale") continue;
+    const Json& box = op["params"]["verts"]["box"];
+    for (int axis = 0; axis < 3; ++axis) {
+      if (box[0][axis].is_null()) continue;
+      if (box[1][axis].get<double>() - box[0][axis].get<double>() < spacing) op["params"]["scale"][axis] = 1.0;
+    }
+  }
+}
+
+}  // namespace
+
+int Layout::NumOps() const { return CageStep() + 3 + (subdivide ? 1 : 0); }
+
+int Layout::CageStep() const {
+  return static_cast<int>(profile.size() + grid.size() + ridge.size() + deforms.size() + details.size());
+}
+
+bool Layout::HasDetail(const std::string& op_name) const {
+  for (const Json& op : details) {
+    if (op["op"] == op_name) return true;
+  }
+  return false;
+}
+
+Json Layout::Document() const {
+  std::vector<Json> ops;
+  for (const std::vector<Json>* part : {&profile, &grid}) ops.insert(ops.end(), part->begin(), part->end());
+  ops.push_back(scale);
+  for (const std::vector<Json>* part : {&ridge, &deforms, &details}) ops.insert(ops.end(), part->begin(), part->end());
+  if (subdivide) ops.push_back(build::Subdivision(2));
+  ops.push_back(rotate);
+  ops.push_back(translate);
+  return build::Document(ops);
+}
+
+Layout Layout::WithParameters(const Json& fitted) const {
+  const Json& ops = fitted.at("operations");
+  Layout out = *this;
+  size_t i = 0;
+  for (Json& op : out.profile) op = ops[i++];
+  for (Json& op : out.grid) op = ops[i++];
+  PinFlatLoopScales(&out.profile);
+  PinFlatLoopScales(&out.grid);
+  out.scale = ops[i++];
+  for (std::vector<Json>* part : {&out.ridge, &out.deforms, &out.details}) {
+    for (Json& op : *part) op = ops[i++];
+  }
+  if (subdivide) ++i;
+  out.rotate = ops[i++];
+  out.translate = ops[i++];
+  return out;
+}
+
+}  // namespace opgraph

@@ -1,0 +1,29 @@
+#include "search/loop_ops.h"
+
+namespace opgraph {
+
+std::vector<Json> LoopCutWithScales(int axis, int cuts, int expect, std::vector<std::vector<int>> groups) {
+  const build::Axis named = static_cast<build::Axis>(axis);
+  std::vector<Json> ops = {build::LoopCut(named, cuts, Vec3d::Zero())};
+  if (groups.empty()) {
+    for (int i = 0; i < cuts; ++i) groups.push_back({i});
+  }
+  const double spacing = 2.0 / (cuts + 1);
+  for (const std::vector<int>& group : groups) {
+    build::VertexTarget verts;
+    verts.box.lo[axis] = -1.0 + spacing * (group.front() + 1) - 0.3 * spacing;
+    verts.box.hi[axis] = -1.0 + spacing * (group.back() + 1) + 0.3 * spacing;
+    if (expect > 0) verts.expect = expect * static_cast<int>(group.size());
+    ops.push_back(build::EdgeLoopScale(verts, Vec3d::Ones()));
+  }
+  return ops;
+}
+
+std::vector<Json> LoopCutGrid(int first_axis, int second_axis, int first_expect) {
+  std::vector<Json> grid = LoopCutWithScales(first_axis, 2, first_expect, {{0, 1}});
+  const std::vector<Json> second = LoopCutWithScales(second_axis, 2, -1, {{0, 1}});
+  grid.insert(grid.end(), second.begin(), second.end());
+  return grid;
+}
+
+}  // namespace opgraph

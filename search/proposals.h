@@ -1,0 +1,62 @@
+// Proposal families: each a function from the current best layout (and, where it needs one, an
+// analysis of the target or of the residuals) to changes for the policy to judge. No fitting,
+// pricing or logging here: the dependency runs one way, from the policy to the proposals.
+// One family per file (propose_<family>.cc).
+#pragma once
+
+#include <string>
+#include <vector>
+
+#include "ops/builders.h"
+#include "search/face_residuals.h"
+#include "search/layout.h"
+#include "search/policy.h"
+#include "solver/target.h"
+
+namespace opgraph {
+
+// Subdivision (level 2) at the end of the structure.
+std::vector<Round> ProposeSmoothing(const Layout& best);
+
+// Profiles along the long axis, simplest first: a waist or bulge (two loops scaled together),
+// a pinch between two end sections (the inner two of four), the end loops apart, then one
+// scale per loop; each also with Subdivision (a round form, a barrel or a vase, is a profile
+// on a subdivided cage, and neither alone lowers the loss much). A richer profile replaces a
+// simpler one only when it pays for its extra ops.
+std::vector<Round> ProposeProfiles(const Layout& best);
+
+// Twist, taper (along the long axis) and bend (about the others), from both sides of the
+// identity, with rings along the long axis when there is no profile to bend smoothly.
+std::vector<Round> ProposeDeforms(const Layout& best);
+
+// A ridge or a peak (a gable roof): a loop cut across one axis, and the cut's vertices on one
+// side of another axis raised along it; every axis pair and side, as alternatives.
+std::vector<Round> ProposeRidges(const Layout& best);
+
+// Holes through the shape (a ring, a handle's eye): a Boolean difference with a prism or a box
+// through the centre along each axis; the fit sizes and places it.
+std::vector<Round> ProposeHoles(const Layout& best);
+
+// Rounded edges: Bevel on the edges sharper than 30 degrees with 5 segments (also instead of
+// the extrusions, which can imitate a rounded rim), then the segment count.
+std::vector<Round> ProposeBevels(const Layout& best);
+
+// Protrusions and cavities from the residuals: Extrude (or Inset, then Extrude) on the cage
+// faces with many target samples far outside or inside; faces wanting the same growth (a
+// table's four legs) together first.
+std::vector<Round> ProposeExtrusions(const Layout& best, const FaceResiduals& residuals);
+
+// Loop-cut grids across two axes: faces where extrusions can start (legs at a table's corners).
+// Each is judged with the extrusions it enables, so these are layouts to expand, not rounds.
+struct Expansion {
+  Layout layout;
+  std::string what;
+};
+std::vector<Expansion> ProposeGrids(const Layout& best);
+
+// The body of a table or a stool: the cube placed on the slab between the largest layers of
+// the target's surface facing + and - along one axis, alone and with a loop-cut grid across it.
+// Empty when the target has no slab clearly thinner than its box.
+std::vector<Expansion> ProposeSlabs(const Target& target, const Layout& pose);
+
+}  // namespace opgraph

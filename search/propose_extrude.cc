@@ -1,0 +1,120 @@
+// Extrusions from the per-face residuals (search/proposals.h).
+#include <algorithm>
+#include <cmath>
+
+#include "search/proposals.h"
+
+namespace opgraph {
+namespace {
+
+struct FaceCandidate {
+  int face;
+  double height;  // signed: out > 0, in < 0
+  size_t support;
+  double width = 1;
+};
+
+// Faces with many samples far outside (protrusion) or inside (cavity), by support x height.
+std::vector<FaceCandidate> FaceCandidates(const FaceResiduals& r) {
+  const size_t min_support = std::max<size_t>(5, r.num_samples / 100);
+  std::vector<FaceCandidate> candidates;
+  for (int f = 0; f < static_cast<int>(r.centroids.size()); ++f) {
+    for (int sign : {1, -1}) {
+      std::vector<double> d = sign > 0 ? r.outside[f] : r.inside[f];
+      if (d.size() < min_support) continue;
+      std::nth_element(d.begin(), d.begin() + d.size() * 3 / 4, d.end());
+      FaceCandidate candidate{f, sign * d[d.size() * 3 / 4], d.size()};
+      if (sign > 0) {
+        // A narrow protrusion starts from a narrowed cap (the Extrude's width). Uniform samples
+        // over a square of side L lie sqrt(1/6) L from its centre (RMS).
+        const double face_spread = std::sqrt(r.areas[f] / 6.0);
+        candidate.width = std::clamp(std::sqrt(r.outside_spread[f]) / std::max(face_spread, 1e-12), 0.1, 1.0);
+      }
+      candidates.push_back(candidate);
+    }
+  }
+  std::sort(candidates.begin(), candidates.end(), [](const FaceCandidate& a, const FaceCandidate& b) {
+    return a.support * std::abs(a.height) > b.support * std::abs(b.height);
+  });
+  return candidates;
+}
+
+// Faces wanting the same growth (a table's four legs, a cross's arms) together, then the six
+// strongest single faces.
+std::vector<std::vector<FaceCandidate>> Groups(const std::vector<FaceCandidate>& candidates, const FaceResiduals& r) {
+  std::vector<std::vector<FaceCandidate>> groups;
+  std::vector<bool> grouped(candidates.size(), false);
+  for (size_t i = 0; i < candidates.size(); ++i) {
+    std::vector<FaceCandidate> group = {candidates[i]};
+    for (size_t j = i + 1; j < candidates.size(); ++j) {
+      const FaceCandidate& a = candidates[i];
+      const FaceCandidate& b = candidates[j];
+      if (grouped[j] || (a.height > 0) != (b.height > 0)) continue;
+      const bool similar_height = std::abs(a.height - b.height) < 0.3 * std::abs(a.height);
+      const bool same_direction = r.normals[a.face].dot(r.normals[b.face]) > 0.9;
+      // Symmetric growth on opposite or perpendicular sides counts as a pattern too.
+      const bool same_size =
+          std::abs(static_cast<double>(b.support) - static_cast<double>(a.support)) < 0.5 * a.support;
+      if (similar_height && (same_direction || same_size)) group.push_back(b), grouped[j] = true;
+    }
+    if (group.size() > 1) groups.push_back(group);
+  }
+  for (size_t i = 0; i < candidates.size() && i < 6; ++i) groups.push_back({candidates[i]});
+  return groups;
+}
+
+// Extrude out (a narrowed cap for a tapered wall), or Inset then Extrude in or out (a straight
+// wall with a rim, as a modeller does), on one group of faces.
+Round ExtrusionRound(const std::vector<FaceCandidate>& group, const FaceResiduals& r) {
+  build::FaceTarget faces;
+  double height = 0, width = 0, side = 0;
+  const double n = static_cast<double>(group.size());
+  for (const FaceCandidate& c : group) {
+    faces.centers.push_back(r.centroids[c.face]);
+    height += c.height / n, width += c.width / n, side += std::sqrt(r.areas[c.face]) / n;
+  }
+  faces.expect = static_cast<int>(group.size());
+  // A shared normal keeps the selector on the same faces when an edit moves their centres.
+  bool shared_normal = true, coplanar_normals = true;
+  for (const FaceCandidate& c : group) {
+    const double dot = r.normals[c.face].dot(r.normals[group[0].face]);
+    shared_normal = shared_normal && dot > 0.99;
+    coplanar_normals = coplanar_normals && dot > 1 - 1e-9;
+  }
+  if (shared_normal) faces.normals = {r.normals[group[0].face]}, faces.min_dot = 0.9;
+  const std::string count = group.size() > 1 ? " x" + std::to_string(group.size()) : "";
+  Round round;
+  if (height > 0) {
+    build::ExtrudeArgs extrude{faces, true, height, width};
+    round.alternatives.push_back([extrude, count](Layout* l) -> std::string {
+      l->details.push_back(build::Extrude(extrude));
+      return "+Extrude out" + count + " " + std::to_string(extrude.height) + " width " + std::to_string(extrude.width);
+    });
+  }
+  // Only on faces sharing one plane's normal: an inset region that folds between faces at a
+  // boundary corner can differ from Blender's (ops/inset.h).
+  const double inset_width = height > 0 ? width : 0.7;
+  if (inset_width < 0.8 && coplanar_normals) {
+    const double thickness = 0.5 * (1 - inset_width) * side;
+    build::ExtrudeArgs extrude{faces, true, height};
+    round.alternatives.push_back([faces, extrude, thickness, count](Layout* l) -> std::string {
+      l->details.push_back(build::Inset(faces, thickness));
+      l->details.push_back(build::Extrude(extrude));
+      return "+Inset " + std::to_string(thickness) + ", Extrude " + (extrude.height > 0 ? "out" : "in") + count + " " +
+             std::to_string(extrude.height);
+    });
+  }
+  return round;
+}
+
+}  // namespace
+
+std::vector<Round> ProposeExtrusions(const Layout& /*best*/, const FaceResiduals& residuals) {
+  std::vector<Round> rounds;
+  for (const std::vector<FaceCandidate>& group : Groups(FaceCandidates(residuals), residuals)) {
+    rounds.push_back(ExtrusionRound(group, residuals));
+  }
+  return rounds;
+}
+
+}  // namespace opgraph

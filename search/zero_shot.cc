@@ -1,0 +1,167 @@
+#include "search/zero_shot.h"
+
+#include <cmath>
+#include <stdexcept>
+
+#include "search/evaluator.h"
+#include "search/finish.h"
+#include "search/pose.h"
+#include "search/proposals.h"
+
+namespace opgraph {
+namespace {
+
+// The staged search: the order in which proposal families are asked, the main-form choice and
+// the lookahead of structures that only pay through the extrusions they enable.
+class StagedSearch {
+ public:
+  StagedSearch(const Target& target, const ZeroShotOptions& options) : target_(target), evaluator_(target, options) {}
+
+  ZeroShotResult Run() {
+    Trial best = FitGlobalAffine();
+    if (!best.ok) throw std::runtime_error("the global affine fit failed");
+    best = Smoothing(best);
+    best = ChooseMainForm(best);
+    // Stages feed each other (a bend lets a profile help, a profile gives extrusions faces), so
+    // they repeat until a whole pass changes nothing.
+    for (int pass = 0; pass < 3 && evaluator_.InBudget(); ++pass) {
+      const double before = best.loss;
+      best = Slab(best);
+      best = Profiles(best);
+      best = Deforms(best);
+      best = Ridges(best);
+      best = Holes(best);
+      best = RepeatDetails(best);
+      best = Grids(best);
+      // Rounding comes after the extrusions, as a modeller would bevel: a bevel first would
+      // round the cage toward a protrusion and split its faces below the extrusions' support.
+      best = Bevels(best);
+      best = Smoothing(best);
+      if (!(best.loss < before)) break;
+    }
+    return Finish(&evaluator_, best);
+  }
+
+ private:
+  using Stage = Trial (StagedSearch::*)(Trial);
+
+  Trial Smoothing(Trial best) { return ConsiderRounds(&evaluator_, "smooth", best, ProposeSmoothing(best.layout)); }
+  Trial Profiles(Trial best) { return ConsiderRounds(&evaluator_, "profile", best, ProposeProfiles(best.layout)); }
+  Trial Deforms(Trial best) { return ConsiderRounds(&evaluator_, "deform", best, ProposeDeforms(best.layout)); }
+  Trial Ridges(Trial best) { return ConsiderRounds(&evaluator_, "ridge", best, ProposeRidges(best.layout)); }
+  Trial Holes(Trial best) { return ConsiderRounds(&evaluator_, "hole", best, ProposeHoles(best.layout)); }
+  Trial Bevels(Trial best) { return ConsiderRounds(&evaluator_, "bevel", best, ProposeBevels(best.layout)); }
+  Trial Details(Trial best) {
+    const FaceResiduals residuals = ComputeFaceResiduals(target_, best.layout);
+    return ConsiderRounds(&evaluator_, "detail", best, ProposeExtrusions(best.layout, residuals));
+  }
+  Trial RepeatDetails(Trial best) {
+    for (int round = 0; round < 6 && evaluator_.InBudget(); ++round) {
+      const double before = best.loss;
+      best = Details(best);
+      if (!(best.loss < before)) break;
+    }
+    return best;
+  }
+
+  // The cube on the target's box, along the coordinate axes (models are often built
+  // axis-aligned: kept unless clearly worse) or the principal axes.
+  Trial FitGlobalAffine() {
+    const Trial aligned = evaluator_.Fit(PoseLayout(target_, Eigen::Matrix3d::Identity()));
+    const Trial rotated = evaluator_.Fit(PoseLayout(target_, PrincipalFrame(target_)));
+    if (aligned.ok && !(rotated.loss < 0.7 * aligned.loss)) {
+      evaluator_.Log("affine", aligned, aligned, true, "Scale, Rotate, Translate (coordinate axes)");
+      return aligned;
+    }
+    evaluator_.Log("affine", rotated, rotated, true, "Scale, Rotate, Translate (principal axes)");
+    return rotated;
+  }
+
+  // The first decision shapes the rest of a greedy search (a profile accepted for a small gain
+  // blocks the extrusion that explains a boss; a small bend blocks a profile), so it is made
+  // best-first: every stage runs from the pose (a rounded box is a Bevel of it), and the one
+  // with the lowest loss after the price of its ops wins. The passes then add to it in a fixed
+  // order.
+  Trial ChooseMainForm(const Trial& start) {
+    const std::pair<const char*, Stage> stages[] = {
+        {"slab", &StagedSearch::Slab},   {"profile", &StagedSearch::Profiles}, {"deform", &StagedSearch::Deforms},
+        {"ridge", &StagedSearch::Ridges}, {"hole", &StagedSearch::Holes},       {"detail", &StagedSearch::RepeatDetails},
+        {"bevel", &StagedSearch::Bevels}};
+    Trial chosen = start;
+    double chosen_score = start.loss;
+    std::string chosen_stage;
+    for (const auto& [name, stage] : stages) {
+      if (!evaluator_.InBudget()) break;
+      const Trial trial = (this->*stage)(start);
+      const int added = trial.layout.NumOps() - start.layout.NumOps();
+      const double score = trial.ok ? trial.loss / Price(evaluator_.options(), added) : kInfinity;
+      if (score < chosen_score) chosen = trial, chosen_score = score, chosen_stage = name;
+    }
+    if (!chosen_stage.empty()) evaluator_.Log("main form", start, chosen, true, "the " + chosen_stage + " stage's result");
+    return chosen;
+  }
+
+  // Loop-cut grids give faces where extrusions can start. Cuts alone do not change the surface,
+  // so each grid is judged with the extrusions it enables (one step of lookahead); without any,
+  // its loop scales would only be a second profile.
+  Trial Grids(Trial best) {
+    for (const Expansion& grid : ProposeGrids(best.layout)) {
+      if (!evaluator_.InBudget()) break;
+      Trial trial = evaluator_.Fit(grid.layout);
+      if (!trial.ok) continue;
+      evaluator_.Log("grid", best, trial, false, grid.what + " (before its extrusions)");
+      const size_t details_before = trial.layout.details.size();
+      trial = RepeatDetails(trial);
+      const int added = trial.layout.NumOps() - best.layout.NumOps();
+      const bool accept = trial.layout.details.size() > details_before &&
+                          trial.loss < best.loss * Price(evaluator_.options(), added);
+      evaluator_.Log("grid", best, trial, accept, grid.what + " with its extrusions");
+      if (accept) best = trial;
+    }
+    return best;
+  }
+
+  // A slab as the body with the extrusions that grow the rest (a table's legs), judged against
+  // the best sequence as a whole. Tried once.
+  Trial Slab(Trial best) {
+    if (slab_tried_ || !evaluator_.InBudget()) return best;
+    slab_tried_ = true;
+    Trial chosen = best;
+    for (const Expansion& slab : ProposeSlabs(target_, best.layout)) {
+      if (!evaluator_.InBudget()) break;
+      Trial trial;
+      trial.layout = slab.layout;
+      trial.ok = true;  // with an unknown (infinite) loss, so its first extrusions are taken
+      trial = RepeatDetails(trial);
+      trial.ok = std::isfinite(trial.loss);
+      const int added = trial.layout.NumOps() - chosen.layout.NumOps();
+      const bool accept = trial.ok && trial.loss < chosen.loss * Price(evaluator_.options(), added);
+      evaluator_.Log("slab", chosen, trial, accept, slab.what + " and its extrusions");
+      if (accept) chosen = trial;
+    }
+    return chosen;
+  }
+
+  static constexpr double kInfinity = std::numeric_limits<double>::infinity();
+  const Target& target_;
+  Evaluator evaluator_;
+  bool slab_tried_ = false;
+};
+
+}  // namespace
+
+std::string ZeroShotOptions::Check() const {
+  if (!(time_budget_seconds > 0)) return "time budget must be positive";
+  if (max_ops < 3) return "max ops must be at least 3";
+  if (!(min_relative_gain >= 0 && min_relative_gain < 1)) return "min relative gain must be in [0, 1)";
+  if (num_threads < 1) return "threads must be at least 1";
+  return "";
+}
+
+ZeroShotResult RecoverSequence(const Target& target, const ZeroShotOptions& options) {
+  const std::string problem = options.Check();
+  if (!problem.empty()) throw std::invalid_argument(problem);
+  return StagedSearch(target, options).Run();
+}
+
+}  // namespace opgraph
