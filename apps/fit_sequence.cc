@@ -1,6 +1,6 @@
 // fit_sequence --input TARGET --out DIR [--init SEQ.json] [--time-budget S] [--max-ops N]
 //              [--seed N] [--optimizer ceres|adam] [--fit-gates] [--loss none|huber|cauchy]
-//              [--samples N] [--threads N] [--quiet]
+//              [--samples N] [--threads N] [--no-freeform] [--quiet]
 // Without --init (the main job): recovers a design sequence for TARGET (a mesh or point cloud,
 // any format io/read_input reads) from scratch with the zero-shot controller
 // (search/zero_shot.h). With --init: fits every continuous parameter of the sequence skeleton
@@ -8,6 +8,7 @@
 // Writes DIR/sequence.json, DIR/result.obj (in the input's frame and units),
 // DIR/steps/NN_<op>.obj, DIR/rebuild_blender.py, DIR/metrics.json and DIR/log.txt (the
 // controller's decisions). Progress lines on stdout.
+// --no-freeform: no free-form displacements of the cage as the last stage (search/freeform.h).
 // --loss: a robust loss (scale 0.02 of the target's unit box) against outliers in the target.
 // Bad input: one line on stderr naming the problem, exit code 2, and nothing written.
 #include <cmath>
@@ -28,7 +29,7 @@ namespace {
 
 constexpr const char* kUsage =
     "usage: fit_sequence --input TARGET --out DIR [--init SEQ.json] [--time-budget S] [--max-ops N] [--seed N] "
-    "[--optimizer ceres|adam] [--fit-gates] [--loss none|huber|cauchy] [--samples N] [--threads N] [--quiet]";
+    "[--optimizer ceres|adam] [--fit-gates] [--loss none|huber|cauchy] [--samples N] [--threads N] [--no-freeform] [--quiet]";
 
 // A whole-string non-negative integer in [lower, upper], else false.
 bool ParseInteger(const std::string& text, long long lower, long long upper, long long* value) {
@@ -107,6 +108,8 @@ int main(int argc, char** argv) {
     } else if (arg == "--max-ops" && has_value) {
       if (!ParseInteger(argv[++i], 3, 1000, &number)) return fail("--max-ops: expected an integer in [3, 1000]");
       zero_shot_options.max_ops = static_cast<int>(number);
+    } else if (arg == "--no-freeform") {
+      zero_shot_options.freeform = false;
     } else if (arg == "--quiet") {
       quiet = true;
     } else {
@@ -191,7 +194,8 @@ int main(int argc, char** argv) {
                       {"fits", recovered.num_fits},
                       {"seconds", recovered.seconds},
                       {"time_budget_seconds", zero_shot_options.time_budget_seconds},
-                      {"search_complete", recovered.search_complete}};
+                      {"search_complete", recovered.search_complete},
+                      {"freeform", recovered.freeform}};
   }
   std::string log;
   for (const std::string& line : recovered.decisions) log += line + "\n";

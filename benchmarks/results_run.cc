@@ -29,7 +29,7 @@ Json RowToJson(const ResultsRow& r) {
           {"f1_0.01", r.f1_001}, {"f1_0.02", r.f1_002},
           {"normal_consistency", std::isfinite(r.normal_consistency) ? Json(r.normal_consistency) : Json(nullptr)},
           {"valence4", r.valence4}, {"quad", r.quad}, {"area_cv", r.area_cv}, {"subdivided", r.subdivided},
-          {"search_complete", r.search_complete}, {"ops", r.ops}, {"seconds", r.seconds},
+          {"search_complete", r.search_complete}, {"freeform", r.freeform}, {"ops", r.ops}, {"seconds", r.seconds},
           {"replay_distance", r.replay_distance}, {"replay_counts_equal", r.replay_counts_equal}, {"lcs", r.lcs},
           {"levenshtein", r.levenshtein}, {"sequence", r.sequence}};
 }
@@ -41,6 +41,7 @@ ResultsRow RowFromJson(const Json& j) {
   r.normal_consistency = NumberOr(j.at("normal_consistency"), NAN);
   r.valence4 = j.at("valence4"), r.quad = j.at("quad"), r.area_cv = j.at("area_cv");
   r.subdivided = j.at("subdivided"), r.search_complete = j.at("search_complete"), r.ops = j.at("ops");
+  r.freeform = j.value("freeform", false);  // records before the free-form stage have none
   r.seconds = j.at("seconds"), r.replay_distance = j.at("replay_distance");
   r.replay_counts_equal = j.at("replay_counts_equal"), r.lcs = j.at("lcs"), r.levenshtein = j.at("levenshtein");
   r.sequence = j.at("sequence");
@@ -75,6 +76,7 @@ ResultsRow RunModel(const ResultsModel& model, const RunOptions& options) {
     row.quad = metrics.at("wiring").at("quad_fraction");
     row.area_cv = metrics.at("wiring").at("face_area_cv");
     if (metrics.contains("fit") && metrics["fit"].contains("search_complete")) row.search_complete = metrics["fit"]["search_complete"];
+    if (metrics.contains("fit")) row.freeform = metrics["fit"].value("freeform", false);
     const std::vector<std::string> ours = OpNamesOf(sequence);
     row.ops = static_cast<int>(ours.size());
     row.subdivided = std::find(ours.begin(), ours.end(), "Subdivision") != ours.end();

@@ -17,6 +17,7 @@ struct ResultsRow {
   double chamfer = 0, f1_001 = 0, f1_002 = 0, normal_consistency = 0;
   double valence4 = 0, quad = 0, area_cv = 0;
   bool subdivided = false, search_complete = true;
+  bool freeform = false;  // the search kept free-form displacements (search/freeform.h)
   int ops = 0;
   double seconds = 0;
   double replay_distance = -1;  // of the diagonal; < 0: Blender failed

@@ -7,6 +7,7 @@
 #include "core/metrics.h"
 #include "ops/replay_guards.h"
 #include "ops/sequence.h"
+#include "search/freeform.h"
 #include "search/scale_first.h"
 
 namespace opgraph {
@@ -104,12 +105,18 @@ ZeroShotResult Finish(Evaluator* evaluator, const Trial& best) {
   }
   document = Simplify(evaluator, document);
   document = ScaleFirstIfSame(document, 2.0 * best.layout.half_extent.norm());
+  bool freeform = false;
+  if (evaluator->options().freeform) {
+    const FreeformOutcome outcome = AddFreeformDetail(evaluator, document);
+    if (outcome.used) document = outcome.document, loss = outcome.loss, freeform = true;
+  }
   ZeroShotResult result;
   result.sequence = document;
   result.loss = loss;
   result.num_fits = evaluator->num_fits();
   result.seconds = evaluator->Seconds();
   result.search_complete = !evaluator->budget_ended_search();
+  result.freeform = freeform;
   if (!result.search_complete) evaluator->Note("the time budget ended the search before every proposal was tried");
   result.decisions = evaluator->decisions();
   std::ostringstream line;

@@ -41,6 +41,9 @@ struct ZeroShotOptions {
   // The fits' residuals. Point-to-plane alone lets a cage leave parts of the target uncovered
   // (house: Chamfer 0.039 vs 0.014 with both; docs/zero-shot.md).
   ChamferMetric metric = ChamferMetric::kPlaneAndPoint;
+  // Free-form detail last (search/freeform.h): per-vertex displacements of the cage when they
+  // lower the Chamfer distance by more than their price.
+  bool freeform = true;
   std::ostream* progress = nullptr;  // one line per decision when set
   // Empty when valid, else the problem.
   std::string Check() const;
@@ -53,6 +56,7 @@ struct ZeroShotResult {
   double seconds = 0;
   std::vector<std::string> decisions;  // one line per accepted or rejected proposal
   bool search_complete = true;         // false when the time budget cut proposals short
+  bool freeform = false;               // whether free-form displacements were kept
 };
 
 // Recovers a sequence for `target`. Deterministic for a given seed.

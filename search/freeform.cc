@@ -1,0 +1,146 @@
+#include "search/freeform.h"
+
+#include <algorithm>
+#include <cmath>
+#include <limits>
+#include <optional>
+#include <sstream>
+
+#include "core/metrics.h"
+#include "ops/builders.h"
+#include "ops/replay_guards.h"
+#include "ops/sequence.h"
+#include "search/policy.h"
+#include "solver/affine_tail.h"
+#include "solver/freeform_fit.h"
+
+namespace opgraph {
+namespace {
+
+// A free-form stage must lower the Chamfer distance by this fraction (with a refined cage, also
+// by the price of the Subdivision it adds): it moves every cage vertex, so it is kept only for
+// detail the structured ops could not reach.
+constexpr double kFreeformGain = 0.25;
+// Below this Chamfer distance (unit box, both ways) the structure already explains the shape.
+constexpr double kMinChamfer = 2e-3;
+// Cages above this size are not displaced (3 parameters and a group per vertex).
+constexpr int kMaxCageVertices = 1500;
+
+bool IsAffineTailOp(const std::string& name) {
+  return name == "Subdivision" || name == "GlobalAffineScale" || name == "GlobalAffineRotate" ||
+         name == "GlobalAffineTranslate";
+}
+
+// Where the displacements go: before the first Subdivision of the document's trailing run of
+// affine ops, else before the run.
+int TailStart(const Json& operations) {
+  int first = static_cast<int>(operations.size());
+  while (first > 0 && IsAffineTailOp(operations[first - 1].at("op"))) --first;
+  for (int k = first; k < static_cast<int>(operations.size()); ++k) {
+    if (operations[k].at("op") == "Subdivision") return k;
+  }
+  return first;
+}
+
+// Half the smallest distance between two cage vertices (0 when two coincide).
+double HalfMinimumSpacing(const Positions<double>& vertices) {
+  double minimum = std::numeric_limits<double>::infinity();
+  for (size_t a = 0; a < vertices.size(); ++a) {
+    for (size_t b = a + 1; b < vertices.size(); ++b) minimum = std::min(minimum, (vertices[a] - vertices[b]).squaredNorm());
+  }
+  return 0.5 * std::sqrt(minimum);
+}
+
+double Chamfer(const Evaluator& evaluator, const Json& document) {
+  MetricsOptions options;
+  options.num_samples = 3000;
+  options.seed = evaluator.options().seed;
+  Sequence sequence = ParseSequence(document);
+  return ComputeShapeMetrics(EvaluateSequence(&sequence).back(), evaluator.target().shape(), options).chamfer.Sum();
+}
+
+struct Candidate {
+  Json document;
+  double chamfer = std::numeric_limits<double>::infinity();
+  double loss = 0;
+  int displaced = 0;
+};
+
+// The displacements fitted on the cage of `document` (its ops before `first_op`), written as a
+// VertexDisplace at `first_op`: one group per moved vertex, a box around it a quarter of the
+// smallest vertex spacing wide, expecting one vertex.
+std::optional<Candidate> FitCandidate(Evaluator* evaluator, const Json& document, int first_op) {
+  Sequence sequence = ParseSequence(document);
+  const std::vector<Mesh> steps = EvaluateSequence(&sequence);
+  const Mesh cage = first_op == 0 ? sequence.StartMesh() : steps[first_op - 1];
+  if (cage.NumVertices() > kMaxCageVertices) return std::nullopt;
+  const double half_spacing = HalfMinimumSpacing(cage.vertices);
+  Eigen::AlignedBox3d box;
+  for (const Vec3d& p : cage.vertices) box.extend(p);
+  const double diagonal = box.diagonal().norm();
+  if (!(half_spacing > 1e-4 * diagonal)) return std::nullopt;
+  const AffineTail tail = ProbeAffineTail(sequence, first_op, cage, steps.back());
+  FreeformOptions options;
+  options.seed = evaluator->options().seed;
+  options.num_threads = evaluator->options().num_threads;
+  const FreeformResult fit = FitDisplacements(evaluator->target(), cage, tail, options);
+  std::vector<build::DisplaceGroup> groups;
+  for (int v = 0; v < cage.NumVertices(); ++v) {
+    if (!(fit.displacements[v].norm() > 1e-5 * diagonal)) continue;
+    build::DisplaceGroup group;
+    for (int axis = 0; axis < 3; ++axis) {
+      group.verts.box.lo[axis] = cage.vertices[v][axis] - 0.5 * half_spacing;
+      group.verts.box.hi[axis] = cage.vertices[v][axis] + 0.5 * half_spacing;
+    }
+    group.verts.expect = 1;
+    group.offset = fit.displacements[v];
+    groups.push_back(group);
+  }
+  if (groups.empty()) return std::nullopt;
+  Candidate candidate;
+  candidate.document = document;
+  Json& operations = candidate.document["operations"];
+  operations.insert(operations.begin() + first_op, build::VertexDisplace(groups));
+  Sequence replay = ParseSequence(candidate.document);
+  if (BreaksReplay(candidate.document, EvaluateSequence(&replay))) return std::nullopt;
+  candidate.chamfer = Chamfer(*evaluator, candidate.document);
+  candidate.loss = fit.final_loss;
+  candidate.displaced = static_cast<int>(groups.size());
+  return candidate;
+}
+
+}  // namespace
+
+FreeformOutcome AddFreeformDetail(Evaluator* evaluator, const Json& document) {
+  FreeformOutcome outcome{document};
+  const int first_op = TailStart(document.at("operations"));
+  const double before = Chamfer(*evaluator, document);
+  if (before < kMinChamfer) return outcome;
+  std::optional<Candidate> best;
+  double best_score = before * (1 - kFreeformGain);
+  std::string best_what;
+  for (int refine : {0, 1, 2}) {
+    Json base = document;
+    if (refine > 0) base["operations"].insert(base["operations"].begin() + first_op, build::Subdivision(refine));
+    std::optional<Candidate> candidate;
+    try {
+      candidate = FitCandidate(evaluator, base, first_op + (refine ? 1 : 0));
+    } catch (const std::runtime_error& error) {
+      evaluator->Note(std::string("freeform: not fitted: ") + error.what());
+    }
+    if (!candidate) continue;
+    const double score = candidate->chamfer / Price(evaluator->options(), refine > 0 ? 1 : 0);
+    const std::string what = std::to_string(candidate->displaced) + " vertices displaced" +
+                             (refine > 0 ? " on a cage refined by Subdivision(" + std::to_string(refine) + ")" : "");
+    std::ostringstream line;
+    line << "freeform: " << what << ": Chamfer " << before << " -> " << candidate->chamfer << " (" << evaluator->Seconds()
+         << " s)";
+    evaluator->Note(line.str());
+    if (score < best_score) best = candidate, best_score = score, best_what = what;
+  }
+  evaluator->Note(best ? "freeform: kept " + best_what : "freeform: not kept");
+  if (best) outcome.document = best->document, outcome.used = true, outcome.loss = best->loss;
+  return outcome;
+}
+
+}  // namespace opgraph
