@@ -101,10 +101,17 @@ std::string SummaryRow(const SetRecord& record) {
   return md.str();
 }
 
-std::string ResultsMarkdown(const std::vector<SetRecord>& records) {
+std::string ResultsMarkdown(const std::vector<SetRecord>& records, int cloud_points) {
   std::ostringstream md;
-  md << "# fit_sequence results on the corpus\n\n"
-     << "Made by `bash benchmarks/run_results.sh --set all` (= `build/run_results --set all`; `--set NAME` reruns "
+  md << "# fit_sequence results on the corpus" << (cloud_points > 0 ? ", point-cloud input" : "") << "\n\n";
+  if (cloud_points > 0) {
+    md << "Point-cloud input: made by `bash benchmarks/run_results.sh --set all --cloud " << cloud_points
+       << "`. Each model is given to `fit_sequence` as " << cloud_points
+       << " seeded area-weighted samples of its surface without normals (an XYZ file; the normals are estimated), "
+          "and the numbers compare the result with the model mesh itself, as on the mesh-input page "
+          "[results.md](results.md).\n\n";
+  }
+  md << "Made by `bash benchmarks/run_results.sh --set all` (= `build/run_results --set all`; `--set NAME` reruns "
         "one set). It runs `fit_sequence --input MODEL --out DIR --time-budget B` (zero-shot, default seed 1) on "
         "every model of the set, several models at once (`--jobs`, default one per core), replays each "
         "`rebuild_blender.py` in real Blender, and compares. Each set's rows are kept in `docs/results/<set>.json` "

@@ -25,6 +25,7 @@ std::vector<SetRecord> LoadSetRecords(const std::filesystem::path& dir);
 // The one-line summary numbers of a set, as the summary table shows them.
 std::string SummaryRow(const SetRecord& record);
 // docs/results.md.
-std::string ResultsMarkdown(const std::vector<SetRecord>& records);
+// `cloud_points` > 0: the page of a point-cloud run (run_results --cloud N).
+std::string ResultsMarkdown(const std::vector<SetRecord>& records, int cloud_points = 0);
 
 }  // namespace opgraph

@@ -4,10 +4,13 @@
 #include <chrono>
 #include <cmath>
 #include <fstream>
+#include <sstream>
 
+#include "core/metrics.h"
 #include "core/obj_io.h"
 #include "core/sequence_similarity.h"
 #include "core/surface_distance.h"
+#include "solver/target.h"
 #include "tests/blender_runner.h"
 
 namespace opgraph {
@@ -21,6 +24,19 @@ std::vector<std::string> OpNamesOf(const Json& document) {
 }
 
 double NumberOr(const Json& value, double fallback) { return value.is_number() ? value.get<double>() : fallback; }
+
+// `count` seeded area-weighted samples of the model's surface, without normals, written to
+// `path` as XYZ text. Returns the model's mesh, the reference for the numbers.
+Mesh WriteCloud(const ResultsModel& model, int count, const fs::path& path) {
+  TargetOptions options;
+  options.num_samples = count;
+  const std::unique_ptr<Target> target = LoadTarget(model.input.string(), options);
+  std::ostringstream xyz;
+  xyz.precision(17);
+  for (const Vec3d& p : target->points()) xyz << p.x() << ' ' << p.y() << ' ' << p.z() << '\n';
+  WriteFileAtomic(path.string(), xyz.str());
+  return target->shape();
+}
 
 }  // namespace
 
@@ -53,7 +69,18 @@ ResultsRow RunModel(const ResultsModel& model, const RunOptions& options) {
   row.set = model.set, row.name = model.name;
   const fs::path dir = options.out / model.set / model.name, log = options.out / model.set / (model.name + ".log");
   fs::remove_all(dir);
-  const std::string command = ShellQuote(options.fit_sequence.string()) + " --input " + ShellQuote(model.input.string()) +
+  fs::path input = model.input;
+  Mesh reference;
+  if (options.cloud_points > 0) {
+    input = options.out / model.set / (model.name + ".xyz");
+    try {
+      reference = WriteCloud(model, options.cloud_points, input);
+    } catch (const std::exception& e) {
+      row.error = std::string("cannot sample the model: ") + e.what();
+      return row;
+    }
+  }
+  const std::string command = ShellQuote(options.fit_sequence.string()) + " --input " + ShellQuote(input.string()) +
                               " --out " + ShellQuote(dir.string()) + " --time-budget " +
                               std::to_string(options.time_budget) + " --quiet > " + ShellQuote(log.string()) + " 2>&1";
   const auto start = std::chrono::steady_clock::now();
@@ -77,6 +104,14 @@ ResultsRow RunModel(const ResultsModel& model, const RunOptions& options) {
     row.area_cv = metrics.at("wiring").at("face_area_cv");
     if (metrics.contains("fit") && metrics["fit"].contains("search_complete")) row.search_complete = metrics["fit"]["search_complete"];
     if (metrics.contains("fit")) row.freeform = metrics["fit"].value("freeform", false);
+    if (options.cloud_points > 0) {  // against the model mesh, not the cloud the fit saw
+      MetricsOptions metrics_options;
+      metrics_options.num_samples = 10000;
+      const ShapeMetrics against_mesh = ComputeShapeMetrics(ReadObj((dir / "result.obj").string()), reference, metrics_options);
+      row.chamfer = against_mesh.chamfer.Sum();
+      row.f1_001 = against_mesh.f1_001, row.f1_002 = against_mesh.f1_002;
+      row.normal_consistency = against_mesh.normal_consistency;
+    }
     const std::vector<std::string> ours = OpNamesOf(sequence);
     row.ops = static_cast<int>(ours.size());
     row.subdivided = std::find(ours.begin(), ours.end(), "Subdivision") != ours.end();

@@ -35,6 +35,10 @@ struct RunOptions {
   std::filesystem::path fit_sequence;  // the binary
   std::filesystem::path out;           // per-model folders go to out / set / name
   int time_budget = 90;
+  // > 0: the model is given to fit_sequence as a cloud of this many surface samples (no
+  // normals, an XYZ file beside its outputs), and the numbers compare the result with the model
+  // mesh itself.
+  int cloud_points = 0;
 };
 
 // Runs the model end to end; a failure of fit_sequence is a row with `error` set.

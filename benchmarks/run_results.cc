@@ -23,6 +23,13 @@ DEFINE_string(doc, "docs/results.md", "the results page to write");
 DEFINE_string(records, "docs/results", "the folder of per-set records (SET.json) the page is rendered from");
 DEFINE_int32(time_budget, 90, "fit_sequence --time-budget per model, seconds");
 DEFINE_int32(jobs, 0, "models run at once (0: one per hardware thread)");
+DEFINE_int32(limit, 0,
+             "only the first N models of each set (0: all), for quick tuning runs; their records and page go to "
+             "out/results_limited unless --records and --doc say otherwise");
+DEFINE_int32(cloud, 0,
+             "> 0: give fit_sequence each model as a cloud of this many surface samples without normals "
+             "(the issue's protocol: 20000), compare with the model mesh; records, page and outputs go to "
+             "docs/results-cloud, docs/results-cloud.md and out/results-cloud unless given");
 DEFINE_string(commit, "", "the commit named in the records (default: git rev-parse --short HEAD)");
 
 namespace fs = std::filesystem;
@@ -57,13 +64,32 @@ int main(int argc, char** argv) {
     std::cerr << "run_results: unexpected argument '" << std::string(argv[1]).substr(0, 80) << "'\n";
     return 2;
   }
-  if (FLAGS_time_budget < 1 || FLAGS_jobs < 0) {
-    std::cerr << "run_results: --time_budget must be >= 1 and --jobs >= 0\n";
+  if (FLAGS_time_budget < 1 || FLAGS_jobs < 0 || FLAGS_limit < 0) {
+    std::cerr << "run_results: --time_budget must be >= 1, --jobs and --limit >= 0\n";
     return 2;
   }
+  auto is_default = [](const char* flag) { return gflags::GetCommandLineFlagInfoOrDie(flag).is_default; };
+  if (FLAGS_cloud < 0) {
+    std::cerr << "run_results: --cloud must be >= 0\n";
+    return 2;
+  }
+  if (FLAGS_cloud > 0 && is_default("records")) FLAGS_records = "docs/results-cloud";
+  if (FLAGS_cloud > 0 && is_default("doc")) FLAGS_doc = "docs/results-cloud.md";
+  if (FLAGS_cloud > 0 && is_default("out")) FLAGS_out = "out/results-cloud";
+  // A limited run never overwrites the full sets' records or page.
+  if (FLAGS_limit > 0 && is_default("records")) FLAGS_records = FLAGS_cloud > 0 ? "out/results_limited-cloud" : "out/results_limited";
+  if (FLAGS_limit > 0 && is_default("doc")) FLAGS_doc = FLAGS_records + "/results.md";
   std::vector<ResultsModel> models;
   try {
     models = ListModels(FLAGS_set, FLAGS_data, FLAGS_synth);
+    if (FLAGS_limit > 0) {
+      std::map<std::string, int> taken;
+      std::vector<ResultsModel> limited;
+      for (const ResultsModel& model : models) {
+        if (taken[model.set]++ < FLAGS_limit) limited.push_back(model);
+      }
+      models = limited;
+    }
   } catch (const std::exception& e) {
     std::cerr << "run_results: " << e.what() << "\n";
     return 2;
@@ -72,6 +98,7 @@ int main(int argc, char** argv) {
   options.fit_sequence = fs::path(argv[0]).parent_path() / "fit_sequence";
   options.out = FLAGS_out;
   options.time_budget = FLAGS_time_budget;
+  options.cloud_points = FLAGS_cloud;
   const int jobs = FLAGS_jobs > 0 ? FLAGS_jobs : std::max(1u, std::thread::hardware_concurrency());
   for (const std::string& set : ResultsSetNames()) fs::create_directories(options.out / set);
 
@@ -96,7 +123,7 @@ int main(int argc, char** argv) {
     }
     std::sort(record.rows.begin(), record.rows.end(), [](const ResultsRow& a, const ResultsRow& b) { return a.name < b.name; });
     SaveSetRecord(record, FLAGS_records);
-    WriteFileAtomic(FLAGS_doc, ResultsMarkdown(LoadSetRecords(FLAGS_records)));
+    WriteFileAtomic(FLAGS_doc, ResultsMarkdown(LoadSetRecords(FLAGS_records), FLAGS_cloud));
     std::cout << "[results] " << set << " done; wrote " << FLAGS_doc << std::endl;
   };
   const auto start = std::chrono::steady_clock::now();

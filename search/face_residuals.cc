@@ -4,6 +4,7 @@
 #include <limits>
 
 #include "core/geometry.h"
+#include "core/nearest.h"
 #include "ops/sequence.h"
 
 namespace opgraph {
@@ -28,17 +29,18 @@ FaceResiduals ComputeFaceResiduals(const Target& target, const Layout& layout) {
   }
   const double threshold = 0.04 * 2.0 * layout.half_extent.norm();
   r.outside.resize(num_faces), r.inside.resize(num_faces), r.outside_spread.assign(num_faces, 0.0);
+  // Each sample belongs to the face holding its closest cage point (a centroid would hand the
+  // rim of a wide face to its narrow neighbours).
+  const std::vector<MeshTriangle> triangles = FanTriangulate(r.cage.faces);
+  const TriangleTree tree(r.cage.vertices, triangles);
   const Positions<double>& points = target.points();
   const size_t stride = std::max<size_t>(1, points.size() / 4000);
   r.num_samples = points.size() / stride;
   for (size_t i = 0; i < points.size(); i += stride) {
-    const Vec3d q = world_from_local.transpose() * (points[i] - translation);
-    int nearest = 0;
-    double nearest_distance = std::numeric_limits<double>::infinity();
-    for (int f = 0; f < num_faces; ++f) {
-      const double d = (q - r.centroids[f]).squaredNorm();
-      if (d < nearest_distance) nearest_distance = d, nearest = f;
-    }
+    const Vec3d q = layout.LocalToCage(world_from_local.transpose() * (points[i] - translation));
+    const ClosestPoint closest = tree.Closest(q);
+    if (closest.triangle < 0) continue;
+    const int nearest = triangles[closest.triangle].face;
     const double along = (q - r.centroids[nearest]).dot(r.normals[nearest]);
     if (along > threshold) {
       r.outside[nearest].push_back(along);

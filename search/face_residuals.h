@@ -1,6 +1,6 @@
 // Residual analysis per cage face: target samples, brought into the cube's frame, assigned to
-// the nearest cage face (by centroid), split into those far outside and far inside along its
-// normal.
+// the cage face holding their closest cage point, split into those far outside and far inside
+// along its normal.
 #pragma once
 
 #include <vector>

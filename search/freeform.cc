@@ -7,6 +7,7 @@
 #include <sstream>
 
 #include "core/metrics.h"
+#include "core/nearest.h"
 #include "ops/builders.h"
 #include "ops/replay_guards.h"
 #include "ops/sequence.h"
@@ -42,13 +43,17 @@ int TailStart(const Json& operations) {
   return first;
 }
 
-// Half the smallest distance between two cage vertices (0 when two coincide).
-double HalfMinimumSpacing(const Positions<double>& vertices) {
-  double minimum = std::numeric_limits<double>::infinity();
-  for (size_t a = 0; a < vertices.size(); ++a) {
-    for (size_t b = a + 1; b < vertices.size(); ++b) minimum = std::min(minimum, (vertices[a] - vertices[b]).squaredNorm());
+// Per vertex, the distance to the nearest other vertex of the cage.
+std::vector<double> NearestSpacing(const Positions<double>& vertices) {
+  const PointTree tree(vertices);
+  std::vector<double> spacing(vertices.size(), 0.0);
+  std::vector<size_t> indices;
+  std::vector<double> squared;
+  for (size_t v = 0; v < vertices.size(); ++v) {
+    tree.KNearest(vertices[v], 2, &indices, &squared);
+    spacing[v] = std::sqrt(squared.back());
   }
-  return 0.5 * std::sqrt(minimum);
+  return spacing;
 }
 
 double Chamfer(const Evaluator& evaluator, const Json& document) {
@@ -67,18 +72,17 @@ struct Candidate {
 };
 
 // The displacements fitted on the cage of `document` (its ops before `first_op`), written as a
-// VertexDisplace at `first_op`: one group per moved vertex, a box around it a quarter of the
-// smallest vertex spacing wide, expecting one vertex.
+// VertexDisplace at `first_op`: one group per moved vertex, a box around it, expecting one vertex.
 std::optional<Candidate> FitCandidate(Evaluator* evaluator, const Json& document, int first_op) {
   Sequence sequence = ParseSequence(document);
   const std::vector<Mesh> steps = EvaluateSequence(&sequence);
   const Mesh cage = first_op == 0 ? sequence.StartMesh() : steps[first_op - 1];
   if (cage.NumVertices() > kMaxCageVertices) return std::nullopt;
-  const double half_spacing = HalfMinimumSpacing(cage.vertices);
+  if (cage.NumVertices() < 2) return std::nullopt;
   Eigen::AlignedBox3d box;
   for (const Vec3d& p : cage.vertices) box.extend(p);
   const double diagonal = box.diagonal().norm();
-  if (!(half_spacing > 1e-4 * diagonal)) return std::nullopt;
+  const std::vector<double> spacing = NearestSpacing(cage.vertices);
   const AffineTail tail = ProbeAffineTail(sequence, first_op, cage, steps.back());
   FreeformOptions options;
   options.seed = evaluator->options().seed;
@@ -86,11 +90,15 @@ std::optional<Candidate> FitCandidate(Evaluator* evaluator, const Json& document
   const FreeformResult fit = FitDisplacements(evaluator->target(), cage, tail, options);
   std::vector<build::DisplaceGroup> groups;
   for (int v = 0; v < cage.NumVertices(); ++v) {
-    if (!(fit.displacements[v].norm() > 1e-5 * diagonal)) continue;
+    // A box that holds no other vertex (half its side under the nearest one's distance over
+    // sqrt(3)) and is wide against Blender's float32 coordinates and its own subdivision's
+    // rounding; vertices too close to another to box safely stay in place.
+    const double reach = 0.25 * spacing[v];
+    if (!(fit.displacements[v].norm() > 1e-5 * diagonal) || !(reach > 1e-4 * diagonal)) continue;
     build::DisplaceGroup group;
     for (int axis = 0; axis < 3; ++axis) {
-      group.verts.box.lo[axis] = cage.vertices[v][axis] - 0.5 * half_spacing;
-      group.verts.box.hi[axis] = cage.vertices[v][axis] + 0.5 * half_spacing;
+      group.verts.box.lo[axis] = cage.vertices[v][axis] - reach;
+      group.verts.box.hi[axis] = cage.vertices[v][axis] + reach;
     }
     group.verts.expect = 1;
     group.offset = fit.displacements[v];

@@ -1,5 +1,7 @@
 #include "search/layout.h"
 
+#include <cmath>
+
 #include "ops/builders.h"
 
 namespace opgraph {
@@ -24,7 +26,7 @@ void PinFlatLoopScales(std::vector<Json>* part) {
 
 }  // namespace
 
-int Layout::NumOps() const { return CageStep() + 3 + (subdivide ? 1 : 0); }
+int Layout::NumOps() const { return CageStep() + 3 + (mirror_axes.empty() ? 0 : 2) + (subdivide ? 1 : 0); }
 
 int Layout::CageStep() const {
   return static_cast<int>(profile.size() + grid.size() + ridge.size() + deforms.size() + details.size());
@@ -37,11 +39,24 @@ bool Layout::HasDetail(const std::string& op_name) const {
   return false;
 }
 
+Vec3d Layout::LocalToCage(Vec3d local) const {
+  if (mirror_axes.empty()) return local;
+  const Json& offset = mirror_offset["params"]["offset"];
+  for (int axis : mirror_axes) local[axis] = std::copysign(std::abs(local[axis]), offset[axis].get<double>());
+  return local - Vec3d(offset[0], offset[1], offset[2]);
+}
+
 Json Layout::Document() const {
   std::vector<Json> ops;
   for (const std::vector<Json>* part : {&profile, &grid}) ops.insert(ops.end(), part->begin(), part->end());
   ops.push_back(scale);
   for (const std::vector<Json>* part : {&ridge, &deforms, &details}) ops.insert(ops.end(), part->begin(), part->end());
+  if (!mirror_axes.empty()) {
+    std::vector<build::Axis> axes;
+    for (int axis : mirror_axes) axes.push_back(static_cast<build::Axis>(axis));
+    ops.push_back(mirror_offset);
+    ops.push_back(build::Mirror(axes));
+  }
   if (subdivide) ops.push_back(build::Subdivision(2));
   ops.push_back(rotate);
   ops.push_back(translate);
@@ -60,6 +75,7 @@ Layout Layout::WithParameters(const Json& fitted) const {
   for (std::vector<Json>* part : {&out.ridge, &out.deforms, &out.details}) {
     for (Json& op : *part) op = ops[i++];
   }
+  if (!mirror_axes.empty()) out.mirror_offset = ops[i], i += 2;
   if (subdivide) ++i;
   out.rotate = ops[i++];
   out.translate = ops[i++];

@@ -2,7 +2,7 @@
 // so element selectors stay valid while the fit moves the global pose:
 //   cube -> profile (loop cuts, loop scales) -> grid (loop cuts, loop scales) -> Scale
 //   -> ridge -> deformations -> details (extrusions, insets, booleans, bevel)
-//   -> Subdivision -> Rotate -> Translate.
+//   -> [Translate, Mirror] -> Subdivision -> Rotate -> Translate.
 // Each part is a list of op entries built by ops/builders.h; splitting a fitted document back
 // into parts relies on fits keeping the op count.
 #pragma once
@@ -24,6 +24,11 @@ struct Layout {
   std::vector<Json> ridge;    // after the scale: a loop cut with its top vertices raised
   std::vector<Json> deforms;
   std::vector<Json> details;  // extrusions (and their insets), booleans, a bevel
+  // A mirrored pair (a symmetric target in two parts): the cage is built on one part, moved by
+  // `mirror_offset` (a GlobalAffineTranslate in the cube's frame) and mirrored about the cube's
+  // origin along `mirror_axes`.
+  std::vector<int> mirror_axes;
+  Json mirror_offset;
   bool subdivide = false;
   // The frame of the pose this layout was placed in: the cube's half extents on the target's
   // box, and the box's axes in world coordinates (columns).
@@ -34,6 +39,9 @@ struct Layout {
   // Index of the last op before Subdivision / Rotate: the step whose mesh is the cage.
   int CageStep() const;
   bool HasDetail(const std::string& op_name) const;
+  // `local` (a point in the frame of the pose's Rotate and Translate) in the cage's frame: for a
+  // mirrored pair, folded onto the built part and moved back by the offset.
+  Vec3d LocalToCage(Vec3d local) const;
   Json Document() const;
   // This layout with the parameters of `fitted` (a fit of Document()).
   Layout WithParameters(const Json& fitted) const;

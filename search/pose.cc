@@ -43,6 +43,10 @@ Layout PoseLayout(const Target& target, const Eigen::Matrix3d& world_from_local,
     lo = lo.cwiseMin(q), hi = hi.cwiseMax(q);
   }
   if (slab_axis >= 0) lo[slab_axis] = slab_lo, hi[slab_axis] = slab_hi;
+  return PoseLayoutOnBox(world_from_local, lo, hi);
+}
+
+Layout PoseLayoutOnBox(const Eigen::Matrix3d& world_from_local, const Vec3d& lo, const Vec3d& hi) {
   const double extent = (hi - lo).maxCoeff();
   const Vec3d half = ((hi - lo) / 2).cwiseMax(Vec3d::Constant(1e-3 * extent));
   // R = Rz Ry Rx: Eigen's eulerAngles(2, 1, 0) returns (z, y, x).

@@ -12,6 +12,9 @@ namespace opgraph {
 Layout PoseLayout(const Target& target, const Eigen::Matrix3d& world_from_local, int slab_axis = -1,
                   double slab_lo = 0, double slab_hi = 0);
 
+// The cube on the box [lo, hi] of the frame `world_from_local` (coordinates along its columns).
+Layout PoseLayoutOnBox(const Eigen::Matrix3d& world_from_local, const Vec3d& lo, const Vec3d& hi);
+
 // A frame of principal axes of the target's samples (columns, right-handed). Axes of (near)
 // equal variance are arbitrary (a plus sign, a square plate, a cylinder): when two are, the
 // pair is turned about the third axis to the smallest bounding rectangle (a plus sign's arms,

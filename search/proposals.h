@@ -11,6 +11,7 @@
 #include "search/face_residuals.h"
 #include "search/layout.h"
 #include "search/policy.h"
+#include "search/residual_clusters.h"
 #include "solver/target.h"
 
 namespace opgraph {
@@ -24,6 +25,10 @@ std::vector<Round> ProposeSmoothing(const Layout& best);
 // on a subdivided cage, and neither alone lowers the loss much). A richer profile replaces a
 // simpler one only when it pays for its extra ops.
 std::vector<Round> ProposeProfiles(const Layout& best);
+
+// Stepped or tilted profiles: EdgeLoopAffineTranslate or EdgeLoopAffineRotate on the two loop
+// groups of the profile with the most residual near them.
+std::vector<Round> ProposeLoopMoves(const Layout& best, const FaceResiduals& residuals);
 
 // Twist, taper (along the long axis) and bend (about the others), from both sides of the
 // identity, with rings along the long axis when there is no profile to bend smoothly.
@@ -46,6 +51,16 @@ std::vector<Round> ProposeBevels(const Layout& best);
 // table's four legs) together first.
 std::vector<Round> ProposeExtrusions(const Layout& best, const FaceResiduals& residuals);
 
+// Boolean union (material the cage lacks) or difference (material it has in excess) with a box
+// or a cylinder along each principal axis on the box of each of the four largest residual
+// clusters, anywhere on the shape; at most three Booleans in a sequence.
+std::vector<Round> ProposeBooleans(const Layout& best, const std::vector<ResidualCluster>& clusters);
+
+// Faceted solids: a bisecting KnifeCut across each axis with its new loop scaled (a faceted
+// waist), and on the two quad faces with the most samples beyond them a KnifeCut between
+// opposite edge midpoints with the new vertices raised (a ridge on a facet).
+std::vector<Round> ProposeFacets(const Layout& best, const FaceResiduals& residuals);
+
 // Loop-cut grids across two axes: faces where extrusions can start (legs at a table's corners).
 // Each is judged with the extrusions it enables, so these are layouts to expand, not rounds.
 struct Expansion {
@@ -58,5 +73,10 @@ std::vector<Expansion> ProposeGrids(const Layout& best);
 // the target's surface facing + and - along one axis, alone and with a loop-cut grid across it.
 // Empty when the target has no slab clearly thinner than its box.
 std::vector<Expansion> ProposeSlabs(const Target& target, const Layout& pose);
+
+// A symmetric target in two parts (a pair of wings, of legs, of towers): the cube on the part
+// beyond each symmetry plane of the pose's frame that has a gap around it, mirrored there.
+// Empty when the target is not such a pair.
+std::vector<Expansion> ProposeMirrors(const Target& target, const Layout& pose);
 
 }  // namespace opgraph

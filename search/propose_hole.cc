@@ -30,7 +30,11 @@ std::vector<Round> ProposeHoles(const Layout& best) {
       hole.size = size;
       if (axis == 0) hole.size = Vec3d(size.z(), size.y(), size.x());
       if (axis == 1) hole.size = Vec3d(size.x(), size.z(), size.y());
-      hole.location = Vec3d::Zero();
+      // Just off the centre, not in proportion to the box: a cutter centred on the cube, or
+      // moved in its proportions, has corners on the diagonals of the cube's triangulated faces,
+      // which the Boolean cannot map back to their faces yet.
+      hole.location = 0.01 * best.half_extent.cwiseProduct(Vec3d(1.0, -0.7, 0.4));
+      hole.location[axis] = 0;
       const Json op = build::Boolean(hole);
       const std::string what = "+Boolean difference " + build::PrimitiveName(tool.primitive) +
                                (tool.spin_deg != 0 ? " (turned)" : "") + " along " +

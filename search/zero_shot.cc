@@ -28,10 +28,13 @@ class StagedSearch {
       const double before = best.loss;
       best = Slab(best);
       best = Profiles(best);
+      best = LoopMoves(best);
       best = Deforms(best);
       best = Ridges(best);
       best = Holes(best);
       best = RepeatDetails(best);
+      best = Booleans(best);
+      best = Facets(best);
       best = Grids(best);
       // Rounding comes after the extrusions, as a modeller would bevel: a bevel first would
       // round the cage toward a protrusion and split its faces below the extrusions' support.
@@ -47,9 +50,22 @@ class StagedSearch {
 
   Trial Smoothing(Trial best) { return ConsiderRounds(&evaluator_, "smooth", best, ProposeSmoothing(best.layout)); }
   Trial Profiles(Trial best) { return ConsiderRounds(&evaluator_, "profile", best, ProposeProfiles(best.layout)); }
+  Trial LoopMoves(Trial best) {
+    if (best.layout.profile.empty()) return best;
+    const FaceResiduals residuals = ComputeFaceResiduals(target_, best.layout);
+    return ConsiderRounds(&evaluator_, "loop", best, ProposeLoopMoves(best.layout, residuals));
+  }
   Trial Deforms(Trial best) { return ConsiderRounds(&evaluator_, "deform", best, ProposeDeforms(best.layout)); }
   Trial Ridges(Trial best) { return ConsiderRounds(&evaluator_, "ridge", best, ProposeRidges(best.layout)); }
   Trial Holes(Trial best) { return ConsiderRounds(&evaluator_, "hole", best, ProposeHoles(best.layout)); }
+  Trial Booleans(Trial best) {
+    const std::vector<ResidualCluster> clusters = FindResidualClusters(target_, best.layout);
+    return ConsiderRounds(&evaluator_, "boolean", best, ProposeBooleans(best.layout, clusters));
+  }
+  Trial Facets(Trial best) {
+    const FaceResiduals residuals = ComputeFaceResiduals(target_, best.layout);
+    return ConsiderRounds(&evaluator_, "facet", best, ProposeFacets(best.layout, residuals));
+  }
   Trial Bevels(Trial best) { return ConsiderRounds(&evaluator_, "bevel", best, ProposeBevels(best.layout)); }
   Trial Details(Trial best) {
     const FaceResiduals residuals = ComputeFaceResiduals(target_, best.layout);
@@ -86,7 +102,7 @@ class StagedSearch {
     const std::pair<const char*, Stage> stages[] = {
         {"slab", &StagedSearch::Slab},   {"profile", &StagedSearch::Profiles}, {"deform", &StagedSearch::Deforms},
         {"ridge", &StagedSearch::Ridges}, {"hole", &StagedSearch::Holes},       {"detail", &StagedSearch::RepeatDetails},
-        {"bevel", &StagedSearch::Bevels}};
+        {"bevel", &StagedSearch::Bevels},  {"mirror", &StagedSearch::Mirror}};
     Trial chosen = start;
     double chosen_score = start.loss;
     std::string chosen_stage;
@@ -122,21 +138,41 @@ class StagedSearch {
   }
 
   // A slab as the body with the extrusions that grow the rest (a table's legs), judged against
-  // the best sequence as a whole. Tried once.
+  // the best sequence as a whole. Tried once. The slab is not fitted alone: the rest of the
+  // target would pull it back to the bounding box.
   Trial Slab(Trial best) {
     if (slab_tried_ || !evaluator_.InBudget()) return best;
     slab_tried_ = true;
+    return Grow("slab", best, ProposeSlabs(target_, best.layout), false);
+  }
+
+  // A mirrored pair: the part fitted, then its extrusions, judged against the best sequence as
+  // a whole. Tried once.
+  Trial Mirror(Trial best) {
+    if (mirror_tried_ || !evaluator_.InBudget()) return best;
+    mirror_tried_ = true;
+    return Grow("mirror", best, ProposeMirrors(target_, best.layout), true);
+  }
+
+  // Each new start (fitted and smoothed first, or else with an unknown loss so that its first
+  // extrusions are taken) with the extrusions it grows, kept when it pays for its ops.
+  Trial Grow(const std::string& stage, const Trial& best, const std::vector<Expansion>& starts, bool fit_first) {
     Trial chosen = best;
-    for (const Expansion& slab : ProposeSlabs(target_, best.layout)) {
+    for (const Expansion& start : starts) {
       if (!evaluator_.InBudget()) break;
       Trial trial;
-      trial.layout = slab.layout;
-      trial.ok = true;  // with an unknown (infinite) loss, so its first extrusions are taken
+      trial.layout = start.layout;
+      trial.ok = true;
+      if (fit_first) {
+        trial = evaluator_.Fit(start.layout);
+        if (!trial.ok) continue;
+        trial = Smoothing(trial);
+      }
       trial = RepeatDetails(trial);
       trial.ok = std::isfinite(trial.loss);
       const int added = trial.layout.NumOps() - chosen.layout.NumOps();
       const bool accept = trial.ok && trial.loss < chosen.loss * Price(evaluator_.options(), added);
-      evaluator_.Log("slab", chosen, trial, accept, slab.what + " and its extrusions");
+      evaluator_.Log(stage, chosen, trial, accept, start.what + " and its extrusions");
       if (accept) chosen = trial;
     }
     return chosen;
@@ -145,7 +181,7 @@ class StagedSearch {
   static constexpr double kInfinity = std::numeric_limits<double>::infinity();
   const Target& target_;
   Evaluator evaluator_;
-  bool slab_tried_ = false;
+  bool slab_tried_ = false, mirror_tried_ = false;
 };
 
 }  // namespace

@@ -1,0 +1,208 @@
+// Proposal families on small cages and targets built by known sequences: each family proposes
+// the change that built the target (found from the target or the residuals, not from the
+// sequence), and every change it proposes gives a sequence the engine evaluates.
+#include "search/proposals.h"
+
+#include <gtest/gtest.h>
+
+#include "ops/builders.h"
+#include "ops/sequence.h"
+#include "search/face_residuals.h"
+#include "search/pose.h"
+
+namespace opgraph {
+namespace {
+
+using build::Axis;
+
+Mesh Build(const std::vector<Json>& ops) {
+  Sequence sequence = ParseSequence(build::Document(ops));
+  return EvaluateSequence(&sequence).back();
+}
+
+std::unique_ptr<Target> MakeTarget(const std::vector<Json>& ops) {
+  return std::make_unique<Target>(Build(ops), Positions<double>{}, TargetOptions{});
+}
+
+// Applies every alternative of every round to `layout` and checks the result evaluates.
+int ExpectAllEvaluate(const Layout& layout, const std::vector<Round>& rounds) {
+  int applied = 0;
+  for (const Round& round : rounds) {
+    for (const Edit& edit : round.alternatives) {
+      Layout changed = layout;
+      if (edit(&changed).empty()) continue;
+      ++applied;
+      Sequence sequence = ParseSequence(changed.Document());
+      EXPECT_NO_THROW(EvaluateSequence(&sequence)) << changed.Document().dump();
+    }
+  }
+  return applied;
+}
+
+TEST(Proposals, ExtrusionOnTheFaceWithTheResidual) {
+  // A block with a boss on top, 0.6 high on a 1-high block.
+  build::ExtrudeArgs boss;
+  boss.faces.normals = {Vec3d::UnitZ()};
+  boss.height = 0.6;
+  const auto target = MakeTarget({build::GlobalScale(Vec3d(1, 1, 0.5)), build::Extrude(boss)});
+  const Layout pose = PoseLayoutOnBox(Eigen::Matrix3d::Identity(), Vec3d(-1, -1, -0.5), Vec3d(1, 1, 0.5));
+  const std::vector<Round> rounds = ProposeExtrusions(pose, ComputeFaceResiduals(*target, pose));
+  ASSERT_FALSE(rounds.empty());
+  Layout first = pose;
+  ASSERT_FALSE(rounds[0].alternatives.empty());
+  ASSERT_FALSE(rounds[0].alternatives[0](&first).empty());
+  ASSERT_EQ(first.details.size(), 1u);
+  const Json& extrude = first.details[0];
+  EXPECT_EQ(extrude["op"], "Extrude");
+  EXPECT_NEAR(extrude["params"]["height"].get<double>(), 0.6, 0.15);
+  EXPECT_NEAR(extrude["params"]["faces"]["normal"][2].get<double>(), 1.0, 1e-9);
+  EXPECT_GT(ExpectAllEvaluate(pose, rounds), 0);
+}
+
+TEST(Proposals, NoExtrusionWhereTheCageFits) {
+  const auto target = MakeTarget({build::GlobalScale(Vec3d(1, 1, 0.5))});
+  const Layout pose = PoseLayoutOnBox(Eigen::Matrix3d::Identity(), Vec3d(-1, -1, -0.5), Vec3d(1, 1, 0.5));
+  EXPECT_TRUE(ProposeExtrusions(pose, ComputeFaceResiduals(*target, pose)).empty());
+}
+
+TEST(Proposals, MirroredPairAcrossItsGap) {
+  // Two blocks 1.5 apart along X (a pair), mirrored by the sequence that built them.
+  const auto target = MakeTarget({build::GlobalScale(Vec3d(0.5, 1, 0.7)), build::GlobalTranslate(Vec3d(1.25, 0, 0)),
+                                  build::Mirror({Axis::kX}), build::GlobalTranslate(Vec3d(3, 1, 0))});
+  const Layout pose = PoseLayout(*target, Eigen::Matrix3d::Identity());
+  const std::vector<Expansion> pairs = ProposeMirrors(*target, pose);
+  ASSERT_EQ(pairs.size(), 1u);
+  const Layout& pair = pairs[0].layout;
+  EXPECT_EQ(pair.mirror_axes, std::vector<int>{0});
+  EXPECT_NEAR(pair.half_extent.x(), 0.5, 0.05);
+  EXPECT_NEAR(pair.mirror_offset["params"]["offset"][0].get<double>(), 1.25, 0.05);
+  // As placed, before any fit, the pair already covers the target.
+  Sequence sequence = ParseSequence(pair.Document());
+  const Mesh placed = EvaluateSequence(&sequence).back();
+  ASSERT_EQ(placed.NumVertices(), 16);
+  for (const Vec3d& p : placed.vertices) {
+    double squared = 0;
+    target->tree().Nearest(p, &squared);
+    EXPECT_LT(std::sqrt(squared), 0.1);
+  }
+  // A single block has no mirrored pair.
+  const auto single = MakeTarget({build::GlobalScale(Vec3d(0.5, 1, 0.7))});
+  EXPECT_TRUE(ProposeMirrors(*single, PoseLayout(*single, Eigen::Matrix3d::Identity())).empty());
+}
+
+TEST(Proposals, SlabUnderATable) {
+  // A top slab with four legs grown from a loop-cut grid.
+  build::ExtrudeArgs legs;
+  legs.faces.normals = {-Vec3d::UnitZ()};
+  legs.faces.centers = {Vec3d(-1, -0.67, -0.1), Vec3d(1, -0.67, -0.1), Vec3d(-1, 0.67, -0.1), Vec3d(1, 0.67, -0.1)};
+  legs.faces.expect = 4;
+  legs.individual = true;
+  legs.height = 1.5;
+  const auto target = MakeTarget({build::LoopCut(Axis::kX, 2, Vec3d::Zero()), build::LoopCut(Axis::kY, 2, Vec3d::Zero()),
+                                  build::GlobalScale(Vec3d(1.5, 1, 0.1)), build::Extrude(legs)});
+  const Layout pose = PoseLayout(*target, Eigen::Matrix3d::Identity());
+  const std::vector<Expansion> slabs = ProposeSlabs(*target, pose);
+  ASSERT_EQ(slabs.size(), 2u);
+  EXPECT_NEAR(slabs[0].layout.half_extent.z(), 0.1, 0.03);
+  EXPECT_FALSE(slabs[1].layout.grid.empty());
+}
+
+TEST(Proposals, BooleanOnTheClusterOfMissingMaterial) {
+  // A block with a cylindrical boss on its +X side, off centre (added by a Boolean union).
+  build::BooleanArgs boss;
+  boss.primitive = build::Primitive::kCylinder;
+  boss.size = Vec3d(0.6, 0.6, 1.0);
+  boss.rotation_deg = Vec3d(0, 90, 0);  // its axis along X
+  boss.location = Vec3d(1.4, 0.3, 0.2);
+  const auto target = MakeTarget({build::GlobalScale(Vec3d(1, 0.8, 0.6)), build::Boolean(boss)});
+  const Layout pose = PoseLayoutOnBox(Eigen::Matrix3d::Identity(), Vec3d(-1, -0.8, -0.6), Vec3d(1, 0.8, 0.6));
+  const std::vector<ResidualCluster> clusters = FindResidualClusters(*target, pose);
+  ASSERT_FALSE(clusters.empty());
+  EXPECT_FALSE(clusters[0].excess);
+  EXPECT_GT(clusters[0].centre.x(), 1.0);
+  EXPECT_NEAR(clusters[0].centre.y(), 0.3, 0.15);
+  EXPECT_NEAR(clusters[0].centre.z(), 0.2, 0.15);
+  const std::vector<Round> rounds = ProposeBooleans(pose, clusters);
+  ASSERT_FALSE(rounds.empty());
+  EXPECT_EQ(rounds[0].alternatives.size(), 4u);  // a box, a cylinder along each axis
+  Layout first = pose;
+  ASSERT_FALSE(rounds[0].alternatives[0](&first).empty());
+  EXPECT_EQ(first.details.back()["params"]["operation"], "UNION");
+  EXPECT_GT(ExpectAllEvaluate(pose, rounds), 0);
+}
+
+TEST(Proposals, BooleanDifferenceWhereTheCageHasExcess) {
+  // A stepped block (the -X half raised by an extrusion) under the cage of its bounding box: the
+  // cage has material the target lacks over the +X half.
+  build::ExtrudeArgs step;
+  step.faces.normals = {Vec3d::UnitZ()};
+  step.faces.box.hi[0] = 0;
+  step.height = 0.6;
+  const auto target = MakeTarget({build::LoopCut(Axis::kX, 1, Vec3d::Zero()), build::GlobalScale(Vec3d(1, 0.8, 0.3)),
+                                  build::Extrude(step)});
+  const Layout pose = PoseLayoutOnBox(Eigen::Matrix3d::Identity(), Vec3d(-1, -0.8, -0.3), Vec3d(1, 0.8, 0.9));
+  const std::vector<ResidualCluster> clusters = FindResidualClusters(*target, pose);
+  ASSERT_FALSE(clusters.empty());
+  EXPECT_TRUE(clusters[0].excess);
+  EXPECT_NEAR(clusters[0].centre.x(), 0.5, 0.2);
+  // In the cage's frame (centred on the pose's box): the excess lies in its upper part.
+  EXPECT_GT(clusters[0].centre.z(), 0.0);
+  Layout first = pose;
+  ASSERT_FALSE(ProposeBooleans(pose, clusters)[0].alternatives[0](&first).empty());
+  EXPECT_EQ(first.details.back()["params"]["operation"], "DIFFERENCE");
+}
+
+TEST(Proposals, LoopMovesOnTheProfileNearTheResidual) {
+  // A bar whose upper loop is shifted sideways (a stepped profile).
+  build::VertexTarget upper;
+  upper.box.lo[2] = 0.2;
+  const auto target = MakeTarget({build::LoopCut(Axis::kZ, 2, Vec3d::Zero()), build::EdgeLoopTranslate(upper, Vec3d(0.5, 0, 0)),
+                                  build::GlobalScale(Vec3d(0.5, 0.5, 2))});
+  Layout profiled = PoseLayoutOnBox(Eigen::Matrix3d::Identity(), Vec3d(-0.5, -0.5, -2), Vec3d(1.0, 0.5, 2));
+  ASSERT_FALSE(ProposeProfiles(profiled)[2].alternatives[0](&profiled).empty());  // x2, each loop scaled
+  const std::vector<Round> rounds = ProposeLoopMoves(profiled, ComputeFaceResiduals(*target, profiled));
+  ASSERT_FALSE(rounds.empty());
+  EXPECT_EQ(ExpectAllEvaluate(profiled, rounds), 2 * static_cast<int>(rounds.size()));
+}
+
+TEST(Proposals, FacetRidgeOnTheFaceBelowIt) {
+  // A block whose top face carries a ridge: knifed between two edge midpoints, the cut raised.
+  build::FaceTarget top;
+  top.normals = {Vec3d::UnitZ()};
+  top.expect = 1;
+  build::DisplaceGroup ridge{{}, Vec3d(0, 0, 0.5)};
+  ridge.verts.box.lo[2] = 0.9, ridge.verts.box.lo[0] = -0.1, ridge.verts.box.hi[0] = 0.1;
+  ridge.verts.expect = 2;
+  const auto target = MakeTarget({build::KnifeEdges(top, Vec3d(0, -1, 1), Vec3d(0, 1, 1)), build::VertexDisplace({ridge})});
+  const Layout pose = PoseLayoutOnBox(Eigen::Matrix3d::Identity(), Vec3d(-1, -1, -1), Vec3d(1, 1, 1));
+  const std::vector<Round> rounds = ProposeFacets(pose, ComputeFaceResiduals(*target, pose));
+  ASSERT_EQ(rounds.size(), 2u);  // the waists, and the ridge on the top face
+  EXPECT_EQ(rounds[0].alternatives.size(), 3u);
+  Layout raised = pose;
+  ASSERT_FALSE(rounds[1].alternatives[0](&raised).empty());
+  EXPECT_EQ(raised.details[0]["op"], "KnifeCut");
+  EXPECT_GT(raised.details[1]["params"]["groups"][0]["offset"][2].get<double>(), 0.1);
+  EXPECT_EQ(ExpectAllEvaluate(pose, rounds), 5);
+}
+
+TEST(Proposals, EveryStructuredFamilyEvaluates) {
+  const Layout pose = PoseLayoutOnBox(Eigen::Matrix3d::Identity(), Vec3d(-1, -0.5, -2), Vec3d(1, 0.5, 2));
+  EXPECT_EQ(ExpectAllEvaluate(pose, ProposeSmoothing(pose)), 1);
+  EXPECT_EQ(ExpectAllEvaluate(pose, ProposeProfiles(pose)), 12);  // 6 profiles, each also subdivided
+  EXPECT_EQ(ExpectAllEvaluate(pose, ProposeDeforms(pose)), 10);   // along the long axis Z
+  EXPECT_EQ(ExpectAllEvaluate(pose, ProposeRidges(pose)), 12);    // axis pairs and sides
+  EXPECT_EQ(ExpectAllEvaluate(pose, ProposeHoles(pose)), 9);
+  EXPECT_EQ(ExpectAllEvaluate(pose, ProposeBevels(pose)), 1);  // the segment rounds need a bevel first
+  for (const Expansion& grid : ProposeGrids(pose)) {
+    Sequence sequence = ParseSequence(grid.layout.Document());
+    EXPECT_NO_THROW(EvaluateSequence(&sequence));
+  }
+  EXPECT_EQ(ProposeGrids(pose).size(), 3u);
+  // The profile follows the long axis.
+  Layout profiled = pose;
+  ProposeProfiles(pose)[0].alternatives[0](&profiled);
+  EXPECT_EQ(profiled.profile[0]["params"]["axis"], "Z");
+}
+
+}  // namespace
+}  // namespace opgraph
