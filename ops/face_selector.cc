@@ -3,6 +3,8 @@
 #include <algorithm>
 #include <limits>
 
+#include <Eigen/Geometry>
+
 #include "core/geometry.h"
 
 namespace opgraph {
@@ -92,13 +94,25 @@ std::vector<int> FaceSelector::Resolve(const Mesh& mesh) const {
       if (ok) found.push_back(f);
     }
     if (!centers_.empty()) {
+      // A point (nearly) as near to two faces names neither: Blender's float32 centres could
+      // pick the other one.
+      Eigen::AlignedBox3d bounds;
+      for (const Vec3d& v : mesh.vertices) bounds.extend(v);
+      const double tie = 1e-5 * bounds.diagonal().norm();
       std::vector<int> picked;
       for (const Vec3d& p : centers_) {
         int best = -1;
-        double best_d = std::numeric_limits<double>::max();
+        double best_d = std::numeric_limits<double>::max(), second_d = best_d;
         for (int f : found) {
           const double d = (FaceCentroid(mesh.vertices, mesh.faces[f]) - p).norm();
-          if (d < best_d) best_d = d, best = f;
+          if (d < best_d) {
+            second_d = best_d, best_d = d, best = f;
+          } else if (d < second_d) {
+            second_d = d;
+          }
+        }
+        if (best >= 0 && second_d - best_d < tie) {
+          throw FieldError(field_ + ".centers", "a point is as near to two faces; it names neither");
         }
         if (best >= 0 && std::find(picked.begin(), picked.end(), best) == picked.end()) picked.push_back(best);
       }

@@ -88,5 +88,16 @@ TEST(Freeform, NotUsedWhereTheStructureExplainsTheShape) {
   EXPECT_EQ(outcome.document, StructureDocument());
 }
 
+TEST(Freeform, NotTriedOnABevelledCage) {
+  // Bevel profiles match Blender's surface but not always its vertex positions along it, so
+  // per-vertex boxes could miss their vertex in Blender.
+  std::vector<Json> ops = Structure();
+  ops.push_back(build::Bevel(0.1, 3));
+  for (const Json& op : Tail()) ops.push_back(op);
+  Target target(WithLumps(), {}, TargetOptions{});
+  Evaluator evaluator(target, ZeroShotOptions{});
+  EXPECT_FALSE(AddFreeformDetail(&evaluator, build::Document(ops)).used);
+}
+
 }  // namespace
 }  // namespace opgraph

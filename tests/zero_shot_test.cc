@@ -151,7 +151,7 @@ TEST(EditRoundTrip, OneParameterChangesOnlyItsOpAndLater) {
   fs::create_directories(dir);
   WriteObj(BuildMesh(kShapes[3][1]), (dir / "target.obj").string());
   ASSERT_EQ(RunCommand(std::string(OPGRAPH_FIT_SEQUENCE) + " --input " + Quote((dir / "target.obj").string()) +
-                       " --out " + Quote((dir / "fit").string()) + " --time-budget 12 --quiet > /dev/null"),
+                       " --out " + Quote((dir / "fit").string()) + " --time-budget 12 --no-freeform --quiet > /dev/null"),
             0);
   const Json produced = Json::parse(std::ifstream(dir / "fit" / "sequence.json"));
   const int num_ops = static_cast<int>(produced["operations"].size());
