@@ -53,12 +53,12 @@ std::vector<Round> ProposeExtrusions(const Layout& best, const FaceResiduals& re
 
 // Boolean union (material the cage lacks) or difference (material it has in excess) with a box
 // or a cylinder along each principal axis on the box of each of the four largest residual
-// clusters, anywhere on the shape; at most three Booleans in a sequence.
+// clusters, anywhere on the shape; at most three Booleans in a sequence, none after a Bevel.
 std::vector<Round> ProposeBooleans(const Layout& best, const std::vector<ResidualCluster>& clusters);
 
 // Faceted solids: a bisecting KnifeCut across each axis with its new loop scaled (a faceted
 // waist), and on the two quad faces with the most samples beyond them a KnifeCut between
-// opposite edge midpoints with the new vertices raised (a ridge on a facet).
+// opposite edge midpoints with the new vertices raised (a ridge on a facet); none after a Bevel.
 std::vector<Round> ProposeFacets(const Layout& best, const FaceResiduals& residuals);
 
 // Loop-cut grids across two axes: faces where extrusions can start (legs at a table's corners).

@@ -150,6 +150,11 @@ TEST(Proposals, BooleanDifferenceWhereTheCageHasExcess) {
   Layout first = pose;
   ASSERT_FALSE(ProposeBooleans(pose, clusters)[0].alternatives[0](&first).empty());
   EXPECT_EQ(first.details.back()["params"]["operation"], "DIFFERENCE");
+  // Nothing is cut into a bevelled cage (a modeller bevels last).
+  Layout bevelled = pose;
+  bevelled.details.push_back(build::Bevel(0.05, 3));
+  EXPECT_TRUE(ProposeBooleans(bevelled, clusters).empty());
+  EXPECT_TRUE(ProposeFacets(bevelled, ComputeFaceResiduals(*target, bevelled)).empty());
 }
 
 TEST(Proposals, LoopMovesOnTheProfileNearTheResidual) {

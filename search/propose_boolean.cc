@@ -34,7 +34,8 @@ build::BooleanArgs PrimitiveOnBox(const ResidualCluster& cluster, build::Primiti
 
 std::vector<Round> ProposeBooleans(const Layout& best, const std::vector<ResidualCluster>& clusters) {
   std::vector<Round> rounds;
-  if (CountBooleans(best) >= kMaxBooleans) return rounds;
+  // A modeller bevels last, and a Boolean cut into a bevelled cage can differ from Blender's.
+  if (CountBooleans(best) >= kMaxBooleans || best.HasDetail("Bevel")) return rounds;
   for (size_t c = 0; c < clusters.size() && c < 4; ++c) {
     const ResidualCluster& cluster = clusters[c];
     Round round;

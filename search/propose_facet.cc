@@ -8,6 +8,7 @@ namespace opgraph {
 
 std::vector<Round> ProposeFacets(const Layout& best, const FaceResiduals& residuals) {
   std::vector<Round> rounds;
+  if (best.HasDetail("Bevel")) return rounds;  // a modeller bevels last
   // A faceted waist or bulge: a bisecting knife across each axis through the cage's middle, its
   // new loop scaled.
   Round waist;
