@@ -24,22 +24,15 @@ class StagedSearch {
     best = ChooseMainForm(best);
     // Stages feed each other (a bend lets a profile help, a profile gives extrusions faces), so
     // they repeat until a whole pass changes nothing.
+    // Rounding comes after the extrusions, as a modeller would bevel: a bevel first would round
+    // the cage toward a protrusion and split its faces below the extrusions' support.
+    const Stage passes[] = {&StagedSearch::Slab,     &StagedSearch::Profiles, &StagedSearch::LoopMoves,
+                            &StagedSearch::Deforms,  &StagedSearch::Ridges,   &StagedSearch::Holes,
+                            &StagedSearch::RepeatDetails, &StagedSearch::Booleans, &StagedSearch::Facets,
+                            &StagedSearch::Grids,    &StagedSearch::Bevels,   &StagedSearch::Smoothing};
     for (int pass = 0; pass < 3 && evaluator_.InBudget(); ++pass) {
       const double before = best.loss;
-      best = Slab(best);
-      best = Profiles(best);
-      best = LoopMoves(best);
-      best = Deforms(best);
-      best = Ridges(best);
-      best = Holes(best);
-      best = RepeatDetails(best);
-      best = Booleans(best);
-      best = Facets(best);
-      best = Grids(best);
-      // Rounding comes after the extrusions, as a modeller would bevel: a bevel first would
-      // round the cage toward a protrusion and split its faces below the extrusions' support.
-      best = Bevels(best);
-      best = Smoothing(best);
+      for (const Stage stage : passes) best = (this->*stage)(best);
       if (!(best.loss < before)) break;
     }
     return Finish(&evaluator_, best);
