@@ -1,5 +1,5 @@
-// fit_sequence --input TARGET --out DIR [--init SEQ.json] [--time-budget S] [--max-ops N]
-//              [--seed N] [--optimizer ceres|adam] [--fit-gates] [--loss none|huber|cauchy]
+// fit_sequence --input TARGET --out DIR [--init SEQ.json] [--work-budget N] [--time-budget S]
+//              [--max-ops N] [--seed N] [--optimizer ceres|adam] [--fit-gates] [--loss none|huber|cauchy]
 //              [--samples N] [--threads N] [--no-freeform] [--quiet]
 // Without --init (the main job): recovers a design sequence for TARGET (a mesh or point cloud,
 // any format io/read_input reads) from scratch with the zero-shot controller
@@ -7,19 +7,29 @@
 // SEQ.json (ops and discrete choices fixed; its parameters are the start).
 // Writes DIR/sequence.json, DIR/result.obj (in the input's frame and units),
 // DIR/steps/NN_<op>.obj, DIR/rebuild_blender.py, DIR/metrics.json and DIR/log.txt (the
-// controller's decisions). Progress lines on stdout.
+// controller's decisions). Progress on stdout: a bar on a terminal, plain lines otherwise.
+// --work-budget: the search's budget in work units (Jacobian evaluations times parameters; the same
+// result on any machine);
+// --time-budget: a cap in seconds on top of it (none by default).
+// --threads: candidate fits in parallel (default: every hardware thread); the result does not
+// depend on it.
 // --no-freeform: no free-form displacements of the cage as the last stage (search/freeform.h).
 // --loss: a robust loss (scale 0.02 of the target's unit box) against outliers in the target.
 // Bad input: one line on stderr naming the problem, exit code 2, and nothing written.
 #include <cmath>
 #include <cstdlib>
 #include <iostream>
+#include <limits>
 #include <sstream>
 #include <string>
 
+#include <unistd.h>
+
 #include <glog/logging.h>
 
+#include "apps/search_progress_printer.h"
 #include "apps/sequence_outputs.h"
+#include "core/parallel_for.h"
 #include "core/metrics.h"
 #include "core/obj_io.h"
 #include "solver/fitter.h"
@@ -28,7 +38,7 @@
 namespace {
 
 constexpr const char* kUsage =
-    "usage: fit_sequence --input TARGET --out DIR [--init SEQ.json] [--time-budget S] [--max-ops N] [--seed N] "
+    "usage: fit_sequence --input TARGET --out DIR [--init SEQ.json] [--work-budget N] [--time-budget S] [--max-ops N] [--seed N] "
     "[--optimizer ceres|adam] [--fit-gates] [--loss none|huber|cauchy] [--samples N] [--threads N] [--no-freeform] [--quiet]";
 
 // A whole-string non-negative integer in [lower, upper], else false.
@@ -52,6 +62,7 @@ int main(int argc, char** argv) {
   FitterOptions options;
   TargetOptions target_options;
   ZeroShotOptions zero_shot_options;
+  zero_shot_options.num_threads = HardwareThreads();
   bool quiet = false;
   auto fail = [](const std::string& message) {
     std::cerr << "fit_sequence: " << message << "\n";
@@ -101,7 +112,12 @@ int main(int argc, char** argv) {
       target_options.num_samples = static_cast<int>(std::max<long long>(number, 10000));
     } else if (arg == "--threads" && has_value) {
       if (!ParseInteger(argv[++i], 1, 256, &number)) return fail("--threads: expected an integer in [1, 256]");
-      options.num_threads = static_cast<int>(number);
+      zero_shot_options.num_threads = static_cast<int>(number);
+    } else if (arg == "--work-budget" && has_value) {
+      if (!ParseInteger(argv[++i], 100, 1000000000, &number)) {
+        return fail("--work-budget: expected work units in [100, 1000000000]");
+      }
+      zero_shot_options.work_budget = number;
     } else if (arg == "--time-budget" && has_value) {
       if (!ParseInteger(argv[++i], 1, 86400, &number)) return fail("--time-budget: expected seconds in [1, 86400]");
       zero_shot_options.time_budget_seconds = static_cast<double>(number);
@@ -117,9 +133,14 @@ int main(int argc, char** argv) {
     }
   }
   if (input_path.empty() || out_dir.empty()) return fail(kUsage);
-  if (!quiet) options.progress = zero_shot_options.progress = &std::cout;
+  // A terminal gets a progress bar under the decision lines; a pipe or file gets plain lines.
+  SearchProgressPrinter printer(&std::cout, isatty(STDOUT_FILENO) == 1);
+  if (!quiet) {
+    options.progress = &std::cout;
+    if (isatty(STDOUT_FILENO) != 1) zero_shot_options.progress = &std::cout;
+    zero_shot_options.on_progress = [&printer](const SearchProgress& progress) { return printer(progress); };
+  }
   zero_shot_options.seed = options.seed;
-  zero_shot_options.num_threads = options.num_threads;
   zero_shot_options.optimizer = options.optimizer;
   const bool zero_shot = init_path.empty();
 
@@ -133,6 +154,7 @@ int main(int argc, char** argv) {
     target = LoadTarget(input_path, target_options);
     if (zero_shot) {
       recovered = RecoverSequence(*target, zero_shot_options);
+      printer.Close();
       sequence = ParseSequence(recovered.sequence);
       summary.final_loss = recovered.loss;
       summary.seconds = recovered.seconds;
@@ -142,6 +164,7 @@ int main(int argc, char** argv) {
       summary = fitter.Fit();
     }
   } catch (const std::exception& e) {
+    printer.Close();
     return fail(e.what());
   }
   try {
@@ -192,8 +215,14 @@ int main(int argc, char** argv) {
   if (zero_shot) {
     metrics["fit"] = {{"final_loss", Number(recovered.loss)},
                       {"fits", recovered.num_fits},
+                      {"work", recovered.work},
+                      {"work_budget", zero_shot_options.work_budget},
                       {"seconds", recovered.seconds},
-                      {"time_budget_seconds", zero_shot_options.time_budget_seconds},
+                      {"time_budget_seconds", Number(zero_shot_options.time_budget_seconds > 0
+                                                         ? zero_shot_options.time_budget_seconds
+                                                         : std::numeric_limits<double>::quiet_NaN())},
+                      {"threads", zero_shot_options.num_threads},
+                      {"ended_by", SearchEndName(recovered.end)},
                       {"search_complete", recovered.search_complete},
                       {"freeform", recovered.freeform}};
   }

@@ -51,7 +51,7 @@ int main(int argc, char** argv) {
   opgraph::TargetOptions target_options;
   const opgraph::Target target(input.mesh, input.normals, target_options);  // normals estimated if absent
   opgraph::ZeroShotOptions options;
-  options.time_budget_seconds = 15;
+  options.work_budget = 60000;  // a short search (the default is 500,000 work units)
   options.progress = &std::cout;
   const opgraph::ZeroShotResult result = opgraph::RecoverSequence(target, options);
 

@@ -1,19 +1,37 @@
 #include "search/evaluator.h"
 
+#include <algorithm>
 #include <cmath>
+#include <cstdio>
+#include <cstdlib>
 #include <ostream>
 #include <sstream>
 
+#include "core/parallel_for.h"
 #include "ops/replay_guards.h"
 #include "ops/sequence.h"
 #include "search/domain_rules.h"
 
 namespace opgraph {
+namespace {
+
+// A fit's work: its Jacobian evaluations, each weighted by the parameters it differentiates
+// (forward-mode passes carry one derivative per parameter) and by the output's vertices beyond
+// the sampled residuals' share. On 296 search fits of three models (8 to 18,000 vertices) a
+// unit took 172 us on one core, each fit within 1.7x of that (docs/benchmarks.md).
+int64_t Work(const FitSummary& summary) {
+  const double size = std::max(1, summary.num_parameters) * (1.0 + summary.num_vertices / 2000.0);
+  return static_cast<int64_t>(std::ceil(summary.jacobian_evaluations * size));
+}
+
+}  // namespace
 
 Evaluator::Evaluator(const Target& target, const ZeroShotOptions& options)
     : target_(target), options_(options), start_(std::chrono::steady_clock::now()) {
   search_options_.seed = options.seed;
-  search_options_.num_threads = options.num_threads;
+  // One thread per fit: Ceres' threads sum a cost in an order that depends on scheduling,
+  // which would make a fit (and so the search) differ between runs.
+  search_options_.num_threads = 1;
   search_options_.optimizer = options.optimizer;
   search_options_.metric = options.metric;
   search_options_.num_output_samples = 1500;
@@ -32,30 +50,99 @@ FitterOptions Evaluator::FitOptions(FitPrecision precision, const Json& document
                          min_half_extent);
 }
 
-Trial Evaluator::Fit(const Layout& layout, FitPrecision precision) {
-  Trial trial;
-  trial.layout = layout;
-  if (layout.NumOps() > options_.max_ops) return trial;
+// Runs on a worker thread: touches no member that changes during a batch.
+Evaluator::Outcome Evaluator::FitUncached(const Layout& layout, FitPrecision precision) const {
+  Outcome outcome;
+  outcome.trial.layout = layout;
+  if (layout.NumOps() > options_.max_ops) return outcome;
   const Json document = layout.Document();
-  const std::string key = (precision == FitPrecision::kSearch ? "s" : "f") + document.dump();
-  if (const auto cached = cache_.find(key); cached != cache_.end()) return cached->second;
   try {
     Sequence sequence = ParseSequence(document);
+    outcome.fitted = true;
     const FitSummary summary =
         FitSequence(target_, &sequence, FitOptions(precision, document, layout.half_extent.minCoeff()));
-    ++num_fits_;
-    trial.layout = layout.WithParameters(SequenceToJson(sequence));
-    Sequence replay = ParseSequence(trial.layout.Document());
-    trial.loss = summary.final_loss;
+    outcome.work = Work(summary);
+    outcome.trial.layout = layout.WithParameters(SequenceToJson(sequence));
+    Sequence replay = ParseSequence(outcome.trial.layout.Document());
+    outcome.trial.loss = summary.final_loss;
     const std::vector<Mesh> steps = EvaluateSequence(&replay);
-    trial.ok = std::isfinite(trial.loss) && !BreaksReplay(document, steps);
+    outcome.trial.ok = std::isfinite(outcome.trial.loss) && !BreaksReplay(document, steps);
   } catch (const std::runtime_error& error) {
     // The engine's errors: a proposal whose targets vanish or whose fit fails is rejected.
-    Note(std::string("fit failed: ") + error.what());
-    trial.ok = false;
+    outcome.error = error.what();
+    outcome.trial.ok = false;
   }
-  cache_.emplace(key, trial);
-  return trial;
+  return outcome;
+}
+
+Trial Evaluator::Fit(const Layout& layout, FitPrecision precision) { return FitAll({layout}, precision).front(); }
+
+std::string Evaluator::Key(const Layout& layout, FitPrecision precision) {
+  return (precision == FitPrecision::kSearch ? "s" : "f") + layout.Document().dump();
+}
+
+bool Evaluator::NeedsFit(const Layout& layout) const {
+  const std::string key = Key(layout, FitPrecision::kSearch);
+  return cache_.count(key) == 0 && prefetched_.count(key) == 0;
+}
+
+void Evaluator::Prefetch(const std::vector<Layout>& layouts) {
+  std::vector<const Layout*> jobs;
+  std::vector<std::string> keys;
+  for (const Layout& layout : layouts) {
+    std::string key = Key(layout, FitPrecision::kSearch);
+    if (cache_.count(key) || prefetched_.count(key) || std::count(keys.begin(), keys.end(), key)) continue;
+    jobs.push_back(&layout);
+    keys.push_back(std::move(key));
+  }
+  std::vector<Outcome> outcomes(jobs.size());
+  ParallelFor(static_cast<int>(jobs.size()), options_.num_threads,
+              [&](int j) { outcomes[j] = FitUncached(*jobs[j], FitPrecision::kSearch); });
+  for (size_t j = 0; j < jobs.size(); ++j) prefetched_.emplace(std::move(keys[j]), std::move(outcomes[j]));
+}
+
+std::vector<Trial> Evaluator::FitAll(const std::vector<Layout>& layouts, FitPrecision precision) {
+  std::vector<Trial> trials(layouts.size());
+  std::vector<std::string> keys(layouts.size());
+  std::vector<int> job_of(layouts.size(), -1);
+  std::vector<int> jobs;  // indices into `layouts` of the distinct uncached documents
+  std::map<std::string, int> job_of_key;
+  for (size_t i = 0; i < layouts.size(); ++i) {
+    keys[i] = Key(layouts[i], precision);
+    if (const auto cached = cache_.find(keys[i]); cached != cache_.end()) {
+      trials[i] = cached->second;
+    } else if (const auto job = job_of_key.find(keys[i]); job != job_of_key.end()) {
+      job_of[i] = job->second;
+    } else {
+      job_of[i] = job_of_key[keys[i]] = static_cast<int>(jobs.size());
+      jobs.push_back(static_cast<int>(i));
+    }
+  }
+  std::vector<Outcome> outcomes(jobs.size());
+  std::vector<int> to_fit;
+  for (size_t j = 0; j < jobs.size(); ++j) {
+    const auto prefetched = prefetched_.find(keys[jobs[j]]);
+    if (prefetched == prefetched_.end()) {
+      to_fit.push_back(static_cast<int>(j));
+    } else {
+      outcomes[j] = std::move(prefetched->second);
+      prefetched_.erase(prefetched);
+    }
+  }
+  ParallelFor(static_cast<int>(to_fit.size()), options_.num_threads,
+              [&](int f) { outcomes[to_fit[f]] = FitUncached(layouts[jobs[to_fit[f]]], precision); });
+  for (size_t j = 0; j < jobs.size(); ++j) {
+    const Outcome& outcome = outcomes[j];
+    num_fits_ += outcome.fitted ? 1 : 0;
+    work_ += outcome.work;
+    if (!outcome.error.empty()) Note("fit failed: " + outcome.error);
+    cache_.emplace(keys[jobs[j]], outcome.trial);
+  }
+  for (size_t i = 0; i < layouts.size(); ++i) {
+    if (job_of[i] >= 0) trials[i] = outcomes[job_of[i]].trial;
+  }
+  if (!jobs.empty()) Report();
+  return trials;
 }
 
 FitSummary Evaluator::FitGates(Sequence* sequence, const Json& document, double min_half_extent) {
@@ -63,33 +150,55 @@ FitSummary Evaluator::FitGates(Sequence* sequence, const Json& document, double 
   options.fit_gates = true;
   const FitSummary summary = FitSequence(target_, sequence, options);
   ++num_fits_;
+  work_ += Work(summary);
+  Report();
   return summary;
 }
 
 bool Evaluator::InBudget() const {
-  const bool in_budget = Seconds() < kSearchShare * options_.time_budget_seconds;
-  budget_ended_search_ = budget_ended_search_ || !in_budget;
-  return in_budget;
+  if (search_end_ != SearchEnd::kComplete) return false;
+  if (cancelled_) {
+    search_end_ = SearchEnd::kCancelled;
+  } else if (!(static_cast<double>(work_) < kSearchShare * static_cast<double>(options_.work_budget))) {
+    search_end_ = SearchEnd::kWorkBudget;
+  } else if (options_.time_budget_seconds > 0 && !(Seconds() < kSearchShare * options_.time_budget_seconds)) {
+    search_end_ = SearchEnd::kTimeBudget;
+  }
+  return search_end_ == SearchEnd::kComplete;
 }
 
 double Evaluator::Seconds() const {
   return std::chrono::duration<double>(std::chrono::steady_clock::now() - start_).count();
 }
 
+void Evaluator::Report(const std::string& line) const {
+  if (!options_.on_progress) return;
+  SearchProgress progress;
+  progress.stage = stage_;
+  const double search_share = static_cast<double>(work_) / (kSearchShare * static_cast<double>(options_.work_budget));
+  progress.fraction = stage_ == "search" ? kSearchProgress * std::min(1.0, search_share) : stage_fraction_;
+  progress.seconds = Seconds();
+  progress.ops = best_ops_;
+  progress.loss = best_loss_;
+  progress.line = line;
+  if (!options_.on_progress(progress)) cancelled_ = true;
+}
+
 void Evaluator::Log(const std::string& stage, const Trial& before, const Trial& after, bool accepted,
                     const std::string& what) {
   std::ostringstream line;
   line.precision(3);
+  if (accepted && after.ok) best_ops_ = after.layout.NumOps(), best_loss_ = after.loss;
   line << stage << ": " << what << ": loss " << before.loss << " -> "
        << (after.ok ? after.loss : std::numeric_limits<double>::infinity()) << (accepted ? " accepted" : " rejected")
-       << " (" << (accepted ? after : before).layout.NumOps() << " ops, " << num_fits_ << " fits, " << std::fixed
-       << Seconds() << " s)";
+       << " (" << (accepted ? after : before).layout.NumOps() << " ops, " << num_fits_ << " fits, " << work_ << " work)";
   Note(line.str());
 }
 
 void Evaluator::Note(const std::string& line) {
   decisions_.push_back("[zero-shot] " + line);
   if (options_.progress != nullptr) *options_.progress << decisions_.back() << std::endl;
+  Report(decisions_.back());
 }
 
 }  // namespace opgraph

@@ -1,9 +1,13 @@
-// The search's access to the fitter: fits a layout to the target (each document fitted once,
-// later requests answered from a cache keyed by the document), keeps the time budget, counts
-// fits and records the decision log.
+// The search's access to the fitter: fits layouts to the target, a batch at a time on the
+// option's threads (each document fitted once, later requests answered from a cache keyed by
+// the document), keeps the budget in work (and the optional time cap), counts fits, reports
+// progress and records the decision log. A batch's results are recorded in the batch's order,
+// so the log, the cache and the work count do not depend on which thread fitted what.
 #pragma once
 
 #include <chrono>
+#include <cstdint>
+#include <limits>
 #include <map>
 #include <string>
 #include <vector>
@@ -25,6 +29,15 @@ class Evaluator {
   // fails with an engine error (logged), or the fitted sequence would not replay (its
   // selectors re-resolve at the fitted parameters, ops/replay_guards.h).
   Trial Fit(const Layout& layout, FitPrecision precision = FitPrecision::kSearch);
+  // Fit() of every layout, the uncached ones in parallel; trials in the order of `layouts`.
+  std::vector<Trial> FitAll(const std::vector<Layout>& layouts, FitPrecision precision = FitPrecision::kSearch);
+  // Speculation for idle threads: fits the layouts not fitted yet, in parallel, and keeps the
+  // outcomes aside. A later Fit or FitAll of the same document takes its outcome (counting its
+  // work and logging its error then), as if it fitted it then, so prefetching changes the wall
+  // time and nothing else.
+  void Prefetch(const std::vector<Layout>& layouts);
+  // Whether Fit(layout) would fit it now (not cached, not prefetched).
+  bool NeedsFit(const Layout& layout) const;
   // The finishing gate fit of `sequence` (parsed from `document`): op gates fitted with the
   // sparsity stage, ops below the threshold pruned. Throws the fitter's errors.
   FitSummary FitGates(Sequence* sequence, const Json& document, double min_half_extent);
@@ -34,9 +47,22 @@ class Evaluator {
   // Proposals stop at this share of the budget; the finishing fits (gate pruning, polishing,
   // simplification: 20-40 s on a 20-op sequence) take the rest.
   static constexpr double kSearchShare = 0.65;
+  // Whether proposals may still be fitted: the search's share of the work budget and of the
+  // time cap are not spent, and the progress callback has not cancelled.
   bool InBudget() const;
   double Seconds() const;
-  bool budget_ended_search() const { return budget_ended_search_; }
+  // kComplete unless InBudget() has said no.
+  SearchEnd search_end() const { return search_end_; }
+  int64_t work() const { return work_; }
+  // Adds work done outside Fit() (the free-form stage's solves) to the count.
+  void AddWork(int64_t jacobian_evaluations) { work_ += jacobian_evaluations; }
+  // Reports progress to the options' callback (also done after each batch, by Log and by Note).
+  void Report(const std::string& line = "") const;
+  // The stage named in progress reports ("search" until the finishing steps begin) and the
+  // fraction of the whole run it starts at (the search's share of the work budget maps to
+  // [0, kSearchProgress]; finishing steps, which take no fixed work, name their own).
+  void BeginStage(const std::string& stage, double fraction) { stage_ = stage, stage_fraction_ = fraction; }
+  static constexpr double kSearchProgress = 0.85;
 
   // A decision line: "[zero-shot] stage: what: loss a -> b accepted (n ops, k fits, t s)".
   void Log(const std::string& stage, const Trial& before, const Trial& after, bool accepted, const std::string& what);
@@ -51,10 +77,28 @@ class Evaluator {
   const Target& target_;
   ZeroShotOptions options_;
   FitterOptions search_options_, final_options_;
+  // One fit's trial, work and engine error.
+  struct Outcome {
+    Trial trial;
+    bool fitted = false;  // the fitter ran (a layout with too many ops is not fitted)
+    int64_t work = 0;
+    std::string error;  // the engine's error, when it rejected the layout
+  };
+  Outcome FitUncached(const Layout& layout, FitPrecision precision) const;
+  static std::string Key(const Layout& layout, FitPrecision precision);
+
   std::chrono::steady_clock::time_point start_;
   std::map<std::string, Trial> cache_;
-  mutable bool budget_ended_search_ = false;  // a proposal was skipped for lack of time
+  std::map<std::string, Outcome> prefetched_;  // by the search precision's key
+  mutable SearchEnd search_end_ = SearchEnd::kComplete;
+  mutable bool cancelled_ = false;
+  std::string stage_ = "search";
+  double stage_fraction_ = 0;  // after the search: the finishing step's start
   int num_fits_ = 0;
+  int64_t work_ = 0;
+  // The best trial logged as accepted, for progress.
+  int best_ops_ = 0;
+  double best_loss_ = std::numeric_limits<double>::infinity();
   std::vector<std::string> decisions_;
 };
 

@@ -74,11 +74,11 @@ Json ScaleFirstIfSame(const Json& document, double diagonal) {
   }
 }
 
-}  // namespace
-
-ZeroShotResult Finish(Evaluator* evaluator, const Trial& best) {
+// The searched sequence with its op gates fitted and the ops below the threshold pruned, or,
+// when pruning does not pay, polished with more samples; `loss` is set to its loss.
+Json PruneOrPolish(Evaluator* evaluator, const Trial& best, double* loss) {
   const double min_half_extent = best.layout.half_extent.minCoeff();
-  double loss = best.loss;
+  *loss = best.loss;
   const Json searched = best.layout.Document();
   Json document = searched;
   try {
@@ -90,7 +90,7 @@ ZeroShotResult Finish(Evaluator* evaluator, const Trial& best) {
     // Pruning must not undo what the search paid for.
     if (!breaks_replay && summary.final_loss <= best.loss * (1 + evaluator->options().min_relative_gain)) {
       document = fitted;
-      loss = summary.final_loss;
+      *loss = summary.final_loss;
     }
     std::ostringstream line;
     line << "prune: " << summary.pruned_ops.size() << " op(s) below the gate threshold: loss " << best.loss
@@ -99,29 +99,48 @@ ZeroShotResult Finish(Evaluator* evaluator, const Trial& best) {
   } catch (const std::runtime_error& e) {
     evaluator->Note(std::string("final gate fit failed, kept the searched sequence: ") + e.what());
   }
-  if (document == searched) {  // polish the searched sequence with more samples
+  if (document == searched) {
     const Trial polished = evaluator->Fit(best.layout, FitPrecision::kFinal);
-    if (polished.ok) document = polished.layout.Document(), loss = polished.loss;
+    if (polished.ok) document = polished.layout.Document(), *loss = polished.loss;
   }
-  document = Simplify(evaluator, document);
-  document = ScaleFirstIfSame(document, 2.0 * best.layout.half_extent.norm());
+  return document;
+}
+
+}  // namespace
+
+ZeroShotResult Finish(Evaluator* evaluator, const Trial& best) {
+  evaluator->BeginStage("finish: pruning", Evaluator::kSearchProgress);
+  double loss = best.loss;
+  Json document = best.layout.Document();
   bool freeform = false;
-  if (evaluator->options().freeform) {
-    const FreeformOutcome outcome = AddFreeformDetail(evaluator, document);
-    if (outcome.used) document = outcome.document, loss = outcome.loss, freeform = true;
+  // A cancelled search returns its best sequence as it stands.
+  if (evaluator->search_end() != SearchEnd::kCancelled) {
+    document = PruneOrPolish(evaluator, best, &loss);
+    evaluator->BeginStage("finish: simplifying", 0.92);
+    document = Simplify(evaluator, document);
+    document = ScaleFirstIfSame(document, 2.0 * best.layout.half_extent.norm());
+    if (evaluator->options().freeform) {
+      evaluator->BeginStage("finish: free-form", 0.95);
+      const FreeformOutcome outcome = AddFreeformDetail(evaluator, document);
+      if (outcome.used) document = outcome.document, loss = outcome.loss, freeform = true;
+    }
   }
   ZeroShotResult result;
   result.sequence = document;
   result.loss = loss;
   result.num_fits = evaluator->num_fits();
   result.seconds = evaluator->Seconds();
-  result.search_complete = !evaluator->budget_ended_search();
+  result.work = evaluator->work();
+  result.end = evaluator->search_end();
+  result.search_complete = result.end == SearchEnd::kComplete;
   result.freeform = freeform;
-  if (!result.search_complete) evaluator->Note("the time budget ended the search before every proposal was tried");
+  if (!result.search_complete) {
+    evaluator->Note(std::string("the ") + SearchEndName(result.end) + " ended the search before every proposal was tried");
+  }
   result.decisions = evaluator->decisions();
   std::ostringstream line;
   line << "final: " << document["operations"].size() << " ops, loss " << loss << ", " << result.num_fits << " fits, "
-       << result.seconds << " s";
+       << result.work << " work";
   evaluator->Note(line.str());
   return result;
 }

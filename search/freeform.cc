@@ -7,6 +7,7 @@
 #include <sstream>
 
 #include "core/metrics.h"
+#include "core/parallel_for.h"
 #include "core/nearest.h"
 #include "ops/builders.h"
 #include "ops/replay_guards.h"
@@ -73,7 +74,7 @@ struct Candidate {
 
 // The displacements fitted on the cage of `document` (its ops before `first_op`), written as a
 // VertexDisplace at `first_op`: one group per moved vertex, a box around it, expecting one vertex.
-std::optional<Candidate> FitCandidate(Evaluator* evaluator, const Json& document, int first_op) {
+std::optional<Candidate> FitCandidate(const Evaluator& evaluator, const Json& document, int first_op) {
   Sequence sequence = ParseSequence(document);
   const std::vector<Mesh> steps = EvaluateSequence(&sequence);
   const Mesh cage = first_op == 0 ? sequence.StartMesh() : steps[first_op - 1];
@@ -85,9 +86,9 @@ std::optional<Candidate> FitCandidate(Evaluator* evaluator, const Json& document
   const std::vector<double> spacing = NearestSpacing(cage.vertices);
   const AffineTail tail = ProbeAffineTail(sequence, first_op, cage, steps.back());
   FreeformOptions options;
-  options.seed = evaluator->options().seed;
-  options.num_threads = evaluator->options().num_threads;
-  const FreeformResult fit = FitDisplacements(evaluator->target(), cage, tail, options);
+  options.seed = evaluator.options().seed;
+  options.num_threads = 1;  // the candidates run in parallel; one thread each keeps them deterministic
+  const FreeformResult fit = FitDisplacements(evaluator.target(), cage, tail, options);
   std::vector<build::DisplaceGroup> groups;
   for (int v = 0; v < cage.NumVertices(); ++v) {
     // A box that holds no other vertex (half its side under the nearest one's distance over
@@ -111,7 +112,7 @@ std::optional<Candidate> FitCandidate(Evaluator* evaluator, const Json& document
   operations.insert(operations.begin() + first_op, build::VertexDisplace(groups));
   Sequence replay = ParseSequence(candidate.document);
   if (BreaksReplay(candidate.document, EvaluateSequence(&replay))) return std::nullopt;
-  candidate.chamfer = Chamfer(*evaluator, candidate.document);
+  candidate.chamfer = Chamfer(evaluator, candidate.document);
   candidate.loss = fit.final_loss;
   candidate.displaced = static_cast<int>(groups.size());
   return candidate;
@@ -137,22 +138,28 @@ FreeformOutcome AddFreeformDetail(Evaluator* evaluator, const Json& document) {
   std::optional<Candidate> best;
   double best_score = before * (1 - kFreeformGain);
   std::string best_what;
-  for (int refine : {0, 1, 2}) {
+  // The cage as is and refined by Subdivision 1 and 2, fitted in parallel, judged in order.
+  constexpr int kRefinements = 3;
+  std::optional<Candidate> candidates[kRefinements];
+  std::string errors[kRefinements];
+  ParallelFor(kRefinements, evaluator->options().num_threads, [&](int refine) {
     Json base = document;
     if (refine > 0) base["operations"].insert(base["operations"].begin() + first_op, build::Subdivision(refine));
-    std::optional<Candidate> candidate;
     try {
-      candidate = FitCandidate(evaluator, base, first_op + (refine ? 1 : 0));
+      candidates[refine] = FitCandidate(*evaluator, base, first_op + (refine ? 1 : 0));
     } catch (const std::runtime_error& error) {
-      evaluator->Note(std::string("freeform: not fitted: ") + error.what());
+      errors[refine] = error.what();
     }
+  });
+  for (int refine = 0; refine < kRefinements; ++refine) {
+    if (!errors[refine].empty()) evaluator->Note("freeform: not fitted: " + errors[refine]);
+    const std::optional<Candidate>& candidate = candidates[refine];
     if (!candidate) continue;
     const double score = candidate->chamfer / Price(evaluator->options(), refine > 0 ? 1 : 0);
     const std::string what = std::to_string(candidate->displaced) + " vertices displaced" +
                              (refine > 0 ? " on a cage refined by Subdivision(" + std::to_string(refine) + ")" : "");
     std::ostringstream line;
-    line << "freeform: " << what << ": Chamfer " << before << " -> " << candidate->chamfer << " (" << evaluator->Seconds()
-         << " s)";
+    line << "freeform: " << what << ": Chamfer " << before << " -> " << candidate->chamfer;
     evaluator->Note(line.str());
     if (score < best_score) best = candidate, best_score = score, best_what = what;
   }

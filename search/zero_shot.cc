@@ -76,8 +76,10 @@ class StagedSearch {
   // The cube on the target's box, along the coordinate axes (models are often built
   // axis-aligned: kept unless clearly worse) or the principal axes.
   Trial FitGlobalAffine() {
-    const Trial aligned = evaluator_.Fit(PoseLayout(target_, Eigen::Matrix3d::Identity()));
-    const Trial rotated = evaluator_.Fit(PoseLayout(target_, PrincipalFrame(target_)));
+    const std::vector<Trial> poses = evaluator_.FitAll(
+        {PoseLayout(target_, Eigen::Matrix3d::Identity()), PoseLayout(target_, PrincipalFrame(target_))});
+    const Trial& aligned = poses[0];
+    const Trial& rotated = poses[1];
     if (aligned.ok && !(rotated.loss < 0.7 * aligned.loss)) {
       evaluator_.Log("affine", aligned, aligned, true, "Scale, Rotate, Translate (coordinate axes)");
       return aligned;
@@ -114,9 +116,13 @@ class StagedSearch {
   // so each grid is judged with the extrusions it enables (one step of lookahead); without any,
   // its loop scales would only be a second profile.
   Trial Grids(Trial best) {
-    for (const Expansion& grid : ProposeGrids(best.layout)) {
+    if (!evaluator_.InBudget()) return best;
+    const std::vector<Expansion> grids = ProposeGrids(best.layout);
+    const std::vector<Trial> fitted = evaluator_.FitAll(Layouts(grids));
+    for (size_t i = 0; i < grids.size(); ++i) {
+      const Expansion& grid = grids[i];
       if (!evaluator_.InBudget()) break;
-      Trial trial = evaluator_.Fit(grid.layout);
+      Trial trial = fitted[i];
       if (!trial.ok) continue;
       evaluator_.Log("grid", best, trial, false, grid.what + " (before its extrusions)");
       const size_t details_before = trial.layout.details.size();
@@ -151,13 +157,15 @@ class StagedSearch {
   // extrusions are taken) with the extrusions it grows, kept when it pays for its ops.
   Trial Grow(const std::string& stage, const Trial& best, const std::vector<Expansion>& starts, bool fit_first) {
     Trial chosen = best;
-    for (const Expansion& start : starts) {
+    const std::vector<Trial> fitted = fit_first ? evaluator_.FitAll(Layouts(starts)) : std::vector<Trial>();
+    for (size_t i = 0; i < starts.size(); ++i) {
+      const Expansion& start = starts[i];
       if (!evaluator_.InBudget()) break;
       Trial trial;
       trial.layout = start.layout;
       trial.ok = true;
       if (fit_first) {
-        trial = evaluator_.Fit(start.layout);
+        trial = fitted[i];
         if (!trial.ok) continue;
         trial = Smoothing(trial);
       }
@@ -171,6 +179,12 @@ class StagedSearch {
     return chosen;
   }
 
+  static std::vector<Layout> Layouts(const std::vector<Expansion>& expansions) {
+    std::vector<Layout> layouts;
+    for (const Expansion& expansion : expansions) layouts.push_back(expansion.layout);
+    return layouts;
+  }
+
   static constexpr double kInfinity = std::numeric_limits<double>::infinity();
   const Target& target_;
   Evaluator evaluator_;
@@ -179,8 +193,19 @@ class StagedSearch {
 
 }  // namespace
 
+const char* SearchEndName(SearchEnd end) {
+  switch (end) {
+    case SearchEnd::kComplete: return "complete";
+    case SearchEnd::kWorkBudget: return "work budget";
+    case SearchEnd::kTimeBudget: return "time budget";
+    case SearchEnd::kCancelled: return "cancelled";
+  }
+  return "unknown";
+}
+
 std::string ZeroShotOptions::Check() const {
-  if (!(time_budget_seconds > 0)) return "time budget must be positive";
+  if (work_budget < 1) return "work budget must be positive";
+  if (!(time_budget_seconds >= 0)) return "time budget must be positive, or 0 for none";
   if (max_ops < 3) return "max ops must be at least 3";
   if (!(min_relative_gain >= 0 && min_relative_gain < 1)) return "min relative gain must be in [0, 1)";
   if (num_threads < 1) return "threads must be at least 1";

@@ -18,6 +18,7 @@
 #pragma once
 
 #include <cstdint>
+#include <functional>
 #include <iosfwd>
 #include <string>
 #include <vector>
@@ -29,13 +30,38 @@
 
 namespace opgraph {
 
+// Where a search stands, for a progress display (and a caller's cancel).
+struct SearchProgress {
+  std::string stage;    // "search" while proposals are fitted, then "finish: <step>"
+  double fraction = 0;  // of the run done, in [0, 1]: the search's work budget, then steps
+  double seconds = 0;   // wall time so far
+  int ops = 0;          // of the best sequence so far
+  double loss = 0;      // its data loss (unit box, mean squared, both directions)
+  std::string line;     // the decision just taken (as in `decisions`), or empty
+};
+// Called after every batch of fits and every decision; returning false cancels the search
+// (the best sequence so far is finished and returned).
+using ProgressCallback = std::function<bool(const SearchProgress&)>;
+
+// How the search ended.
+enum class SearchEnd { kComplete, kWorkBudget, kTimeBudget, kCancelled };
+const char* SearchEndName(SearchEnd end);
+
 struct ZeroShotOptions {
-  // Total wall time aimed at: proposals stop at 65% of it, the finishing fits take the rest
-  // (they are not cut short, so a run can end somewhat past it).
-  double time_budget_seconds = 90;
+  // The budget in work: Jacobian evaluations of the fitted programs times the parameters they
+  // differentiate, summed over every fit (about 170 us a unit on one core of the machine
+  // docs/benchmarks.md names). Proposals stop at 65% of it; the finishing fits follow. Work
+  // does not depend on the machine, its load or the thread count, so a seed gives the same
+  // result everywhere.
+  int64_t work_budget = 500000;
+  // A cap on wall time, in seconds (0: none). When the cap ends the search before the work
+  // budget, the result depends on the machine's speed and load (metrics.json says which ended it).
+  double time_budget_seconds = 0;
   int max_ops = 24;
   double min_relative_gain = 0.08;  // a proposal must lower the loss by this fraction
   uint64_t seed = 1;
+  // Independent candidate fits run on this many threads; each fit runs on one (so the result
+  // is the same for every thread count).
   int num_threads = 1;
   Optimizer optimizer = Optimizer::kCeres;
   // The fits' residuals. Point-to-plane alone lets a cage leave parts of the target uncovered
@@ -45,6 +71,7 @@ struct ZeroShotOptions {
   // lower the Chamfer distance by more than their price.
   bool freeform = true;
   std::ostream* progress = nullptr;  // one line per decision when set
+  ProgressCallback on_progress;      // structured progress, may cancel; optional
   // Empty when valid, else the problem.
   std::string Check() const;
 };
@@ -53,13 +80,16 @@ struct ZeroShotResult {
   Json sequence;         // the recovered sequence document (sequence.json)
   double loss = 0;       // final data loss (unit box, mean squared, both directions)
   int num_fits = 0;      // Ceres (or Adam) fits run
+  int64_t work = 0;      // the work of all fits (the work budget's unit)
   double seconds = 0;
   std::vector<std::string> decisions;  // one line per accepted or rejected proposal
-  bool search_complete = true;         // false when the time budget cut proposals short
+  SearchEnd end = SearchEnd::kComplete;
+  bool search_complete = true;         // every proposal was tried (end == kComplete)
   bool freeform = false;               // whether free-form displacements were kept
 };
 
-// Recovers a sequence for `target`. Deterministic for a given seed.
+// Recovers a sequence for `target`. Deterministic for a given seed and work budget, whatever
+// the thread count and the machine's load, unless the time cap or a cancel ends the search.
 ZeroShotResult RecoverSequence(const Target& target, const ZeroShotOptions& options);
 
 }  // namespace opgraph

@@ -705,6 +705,8 @@ FitSummary Fitter::Fit() {
   summary.final_loss = CurrentLoss();
   summary.history.push_back({Now() - start_time_, summary.inner_iterations, summary.final_loss});
   summary.jacobian_evaluations = retired_jacobian_evaluations_ + program_->num_jacobian_evaluations();
+  summary.num_parameters = program_->num_columns();
+  summary.num_vertices = static_cast<int>(program_->positions().size());
   summary.seconds = Now() - start_time_;
   return summary;
 }

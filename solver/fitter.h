@@ -86,6 +86,9 @@ struct FitSummary {
   int outer_iterations = 0;
   int inner_iterations = 0;      // LM iterations or Adam steps
   int jacobian_evaluations = 0;
+  // The program's size at the end (a Jacobian evaluation's cost grows with both).
+  int num_parameters = 0;  // columns
+  int num_vertices = 0;    // of the output
   double seconds = 0;
   std::vector<double> gates_before_finalisation;  // per op of the input sequence
   std::vector<int> pruned_ops;                    // indices in the input sequence

@@ -59,10 +59,9 @@ TEST(ZeroShot, RecoversShapesBuiltByKnownSequences) {
     TargetOptions target_options;
     Target target(target_mesh, {}, target_options);
     ZeroShotOptions options;
-    // Enough for the search to finish its proposals on a 2-core machine under a parallel ctest: at 12 s
-    // the wall clock cut block_with_boss before its Extrude (Chamfer 0.048) on this machine, before
-    // and after the corpus work alike (a budget in work, not seconds, is the fast-search issue).
-    options.time_budget_seconds = 40;
+    // About 40 s on one core, as the time budget this test had (at about 12 s the search stopped
+    // before block_with_boss's Extrude); in work, so the same on any machine and load.
+    options.work_budget = 150000;
     const ZeroShotResult result = RecoverSequence(target, options);
     Sequence sequence = ParseSequence(result.sequence);
     const Mesh output = EvaluateSequence(&sequence).back();
@@ -114,7 +113,7 @@ TEST(ZeroShot, FindsAModellersKindOfSequence) {
     const Mesh target_mesh = BuildMesh(shape[1]);
     Target target(target_mesh, {}, TargetOptions());
     ZeroShotOptions options;
-    options.time_budget_seconds = 30;
+    options.work_budget = 110000;  // about 30 s on one core
     const ZeroShotResult result = RecoverSequence(target, options);
     Sequence sequence = ParseSequence(result.sequence);
     const ShapeMetrics metrics = ComputeShapeMetrics(EvaluateSequence(&sequence).back(), target_mesh);
@@ -134,12 +133,32 @@ TEST(ZeroShot, DeterministicForASeed) {
   const Mesh target_mesh = BuildMesh(kShapes[2][1]);
   Target target(target_mesh, {}, TargetOptions());
   ZeroShotOptions options;
-  options.time_budget_seconds = 120;
+  options.work_budget = 60000;  // ends the search partway, at a point fixed by the work done
   const ZeroShotResult first = RecoverSequence(target, options);
+  options.num_threads = 3;
   const ZeroShotResult second = RecoverSequence(target, options);
-  // A budget can cut the search at different points: this one must not.
-  ASSERT_TRUE(first.search_complete && second.search_complete);
-  EXPECT_EQ(first.sequence, second.sequence);
+  EXPECT_EQ(first.end, SearchEnd::kWorkBudget);
+  EXPECT_EQ(first.work, second.work);
+  EXPECT_EQ(first.decisions, second.decisions);
+  EXPECT_EQ(first.sequence.dump(), second.sequence.dump());
+}
+
+TEST(ZeroShot, ACallbackSeesProgressAndCanCancel) {
+  Target target(BuildMesh(kShapes[3][1]), {}, TargetOptions());
+  ZeroShotOptions options;
+  std::vector<SearchProgress> seen;
+  options.on_progress = [&seen](const SearchProgress& progress) {
+    seen.push_back(progress);
+    return seen.size() < 3;
+  };
+  const ZeroShotResult result = RecoverSequence(target, options);
+  EXPECT_EQ(result.end, SearchEnd::kCancelled);
+  ASSERT_GE(seen.size(), 3u);
+  for (size_t i = 1; i < seen.size(); ++i) EXPECT_GE(seen[i].fraction, seen[i - 1].fraction);
+  EXPECT_LT(seen[2].fraction, 0.5);
+  // The best sequence so far comes back whole: it evaluates.
+  Sequence sequence = ParseSequence(result.sequence);
+  EXPECT_NO_THROW(EvaluateSequence(&sequence));
 }
 
 // Runs fit_sequence (zero-shot) on a built shape, then changes one continuous parameter of each
@@ -151,7 +170,7 @@ TEST(EditRoundTrip, OneParameterChangesOnlyItsOpAndLater) {
   fs::create_directories(dir);
   WriteObj(BuildMesh(kShapes[3][1]), (dir / "target.obj").string());
   ASSERT_EQ(RunCommand(std::string(OPGRAPH_FIT_SEQUENCE) + " --input " + Quote((dir / "target.obj").string()) +
-                       " --out " + Quote((dir / "fit").string()) + " --time-budget 12 --no-freeform --quiet > /dev/null"),
+                       " --out " + Quote((dir / "fit").string()) + " --work-budget 50000 --no-freeform --quiet > /dev/null"),
             0);
   const Json produced = Json::parse(std::ifstream(dir / "fit" / "sequence.json"));
   const int num_ops = static_cast<int>(produced["operations"].size());
