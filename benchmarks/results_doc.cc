@@ -56,7 +56,8 @@ void SaveSetRecord(const SetRecord& record, const fs::path& dir) {
   Json rows = Json::array();
   for (const ResultsRow& row : record.rows) rows.push_back(RowToJson(row));
   const Json json = {{"set", record.set},   {"commit", record.commit}, {"date", record.date},
-                     {"time_budget", record.time_budget}, {"jobs", record.jobs}, {"rows", rows}};
+                     {"time_budget", record.time_budget}, {"work_budget", record.work_budget},
+                     {"threads", record.threads},         {"jobs", record.jobs},     {"rows", rows}};
   fs::create_directories(dir);
   WriteFileAtomic((dir / (record.set + ".json")).string(), json.dump(1) + "\n");
 }
@@ -70,11 +71,26 @@ std::vector<SetRecord> LoadSetRecords(const fs::path& dir) {
     SetRecord record;
     record.set = json.at("set"), record.commit = json.at("commit"), record.date = json.at("date");
     record.time_budget = json.at("time_budget"), record.jobs = json.at("jobs");
+    record.work_budget = json.value("work_budget", int64_t{0}), record.threads = json.value("threads", 0);
     for (const Json& row : json.at("rows")) record.rows.push_back(RowFromJson(row));
     records.push_back(record);
   }
   return records;
 }
+
+namespace {
+
+// The budget of a run, as the summary's run column shows it: work (and a time cap), or the
+// time budget of a record made before the work budget.
+std::string Budget(const SetRecord& record) {
+  if (record.work_budget <= 0) return std::to_string(record.time_budget) + " s";
+  std::string text = std::to_string(record.work_budget) + " work";
+  if (record.time_budget > 0) text += ", cap " + std::to_string(record.time_budget) + " s";
+  if (record.threads > 0) text += ", " + std::to_string(record.threads) + " threads";
+  return text;
+}
+
+}  // namespace
 
 std::string SummaryRow(const SetRecord& record) {
   std::vector<double> chamfer, f1, nc, lcs, lev, seconds, v4;
@@ -96,7 +112,7 @@ std::string SummaryRow(const SetRecord& record) {
      << Fixed(Median(chamfer), 4) << " | " << Fixed(Median(f1), 3) << " | " << Fixed(Median(nc), 3) << " | "
      << Fixed(Mean(lcs), 2) << " | " << Fixed(Mean(lev), 2) << " | " << Fixed(Median(v4), 3) << " | " << replays
      << " of " << record.rows.size() << " | " << Fixed(Median(seconds), 1) << " | " << complete << " of "
-     << record.rows.size() << " | " << freeform << " | " << record.commit << ", " << record.date << ", " << record.time_budget << " s, "
+     << record.rows.size() << " | " << freeform << " | " << record.commit << ", " << record.date << ", " << Budget(record) << ", "
      << record.jobs << " jobs |\n";
   return md.str();
 }
@@ -112,7 +128,7 @@ std::string ResultsMarkdown(const std::vector<SetRecord>& records, int cloud_poi
           "[results.md](results.md).\n\n";
   }
   md << "Made by `bash benchmarks/run_results.sh --set all` (= `build/run_results --set all`; `--set NAME` reruns "
-        "one set). It runs `fit_sequence --input MODEL --out DIR --time-budget B` (zero-shot, default seed 1) on "
+        "one set). It runs `fit_sequence --input MODEL --out DIR` (zero-shot, default seed 1, the budget in the run column) on "
         "every model of the set, several models at once (`--jobs`, default one per core), replays each "
         "`rebuild_blender.py` in real Blender, and compares. Each set's rows are kept in `docs/results/<set>.json` "
         "with the commit, date and budget of the run that made them; this page is rendered from all of them. "

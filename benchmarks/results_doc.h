@@ -13,7 +13,9 @@ namespace opgraph {
 
 struct SetRecord {
   std::string set, commit, date;
-  int time_budget = 0, jobs = 0;
+  int time_budget = 0, jobs = 0;  // time_budget: a cap in seconds (0: none)
+  int64_t work_budget = 0;         // 0: a record made before the work budget
+  int threads = 0;                 // fit_sequence --threads (0: its default)
   std::vector<ResultsRow> rows;
 };
 

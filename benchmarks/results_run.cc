@@ -80,9 +80,13 @@ ResultsRow RunModel(const ResultsModel& model, const RunOptions& options) {
       return row;
     }
   }
+  std::string budget;
+  if (options.work_budget > 0) budget += " --work-budget " + std::to_string(options.work_budget);
+  if (options.time_budget > 0) budget += " --time-budget " + std::to_string(options.time_budget);
+  if (options.threads > 0) budget += " --threads " + std::to_string(options.threads);
   const std::string command = ShellQuote(options.fit_sequence.string()) + " --input " + ShellQuote(input.string()) +
-                              " --out " + ShellQuote(dir.string()) + " --time-budget " +
-                              std::to_string(options.time_budget) + " --quiet > " + ShellQuote(log.string()) + " 2>&1";
+                              " --out " + ShellQuote(dir.string()) + budget + " --quiet > " + ShellQuote(log.string()) +
+                              " 2>&1";
   const auto start = std::chrono::steady_clock::now();
   const int status = std::system(command.c_str());
   row.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();

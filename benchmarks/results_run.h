@@ -34,7 +34,9 @@ ResultsRow RowFromJson(const Json& json);
 struct RunOptions {
   std::filesystem::path fit_sequence;  // the binary
   std::filesystem::path out;           // per-model folders go to out / set / name
-  int time_budget = 90;
+  int64_t work_budget = 0;  // fit_sequence --work-budget (0: its default)
+  int time_budget = 0;      // fit_sequence --time-budget, a cap in seconds (0: none)
+  int threads = 0;          // fit_sequence --threads (0: its default, every hardware thread)
   // > 0: the model is given to fit_sequence as a cloud of this many surface samples (no
   // normals, an XYZ file beside its outputs), and the numbers compare the result with the model
   // mesh itself.

@@ -14,6 +14,7 @@
 
 #include "benchmarks/results_doc.h"
 #include "core/obj_io.h"
+#include "search/zero_shot.h"
 
 DEFINE_string(set, "all", "the set to run: all, gt-dev, synth-tune, synth-heldout, real-dev, real-tune, real-heldout");
 DEFINE_string(data, "../shared/data", "the reference data (gt-dev, real-dev, real-train)");
@@ -21,7 +22,9 @@ DEFINE_string(synth, "out/synth", "the synthetic corpus written by build/make_sy
 DEFINE_string(out, "out/results", "where each model's fit_sequence outputs go (out/SET/MODEL)");
 DEFINE_string(doc, "docs/results.md", "the results page to write");
 DEFINE_string(records, "docs/results", "the folder of per-set records (SET.json) the page is rendered from");
-DEFINE_int32(time_budget, 90, "fit_sequence --time-budget per model, seconds");
+DEFINE_int64(work_budget, 0, "fit_sequence --work-budget per model (0: its default)");
+DEFINE_int32(time_budget, 0, "fit_sequence --time-budget per model, a cap in seconds (0: none)");
+DEFINE_int32(threads, 0, "fit_sequence --threads per model (0: its default, every hardware thread)");
 DEFINE_int32(jobs, 0, "models run at once (0: one per hardware thread)");
 DEFINE_int32(limit, 0,
              "only the first N models of each set (0: all), for quick tuning runs; their records and page go to "
@@ -58,14 +61,14 @@ std::string Today() {
 }  // namespace
 
 int main(int argc, char** argv) {
-  gflags::SetUsageMessage("run_results [--set NAME] [--time_budget S] [--jobs N] (see --help)");
+  gflags::SetUsageMessage("run_results [--set NAME] [--work_budget N] [--time_budget S] [--jobs N] (see --help)");
   gflags::ParseCommandLineFlags(&argc, &argv, true);
   if (argc > 1) {
     std::cerr << "run_results: unexpected argument '" << std::string(argv[1]).substr(0, 80) << "'\n";
     return 2;
   }
-  if (FLAGS_time_budget < 1 || FLAGS_jobs < 0 || FLAGS_limit < 0) {
-    std::cerr << "run_results: --time_budget must be >= 1, --jobs and --limit >= 0\n";
+  if (FLAGS_work_budget < 0 || FLAGS_time_budget < 0 || FLAGS_threads < 0 || FLAGS_jobs < 0 || FLAGS_limit < 0) {
+    std::cerr << "run_results: --work_budget, --time_budget, --threads, --jobs and --limit must be >= 0\n";
     return 2;
   }
   auto is_default = [](const char* flag) { return gflags::GetCommandLineFlagInfoOrDie(flag).is_default; };
@@ -97,7 +100,9 @@ int main(int argc, char** argv) {
   RunOptions options;
   options.fit_sequence = fs::path(argv[0]).parent_path() / "fit_sequence";
   options.out = FLAGS_out;
+  options.work_budget = FLAGS_work_budget;
   options.time_budget = FLAGS_time_budget;
+  options.threads = FLAGS_threads;
   options.cloud_points = FLAGS_cloud;
   const int jobs = FLAGS_jobs > 0 ? FLAGS_jobs : std::max(1u, std::thread::hardware_concurrency());
   for (const std::string& set : ResultsSetNames()) fs::create_directories(options.out / set);
@@ -115,7 +120,8 @@ int main(int argc, char** argv) {
   std::mutex print;
   // Saves `set`'s record and re-renders the page once all its models are done (under `print`).
   auto save_if_complete = [&](const std::string& set) {
-    SetRecord record{set, commit.empty() ? "unknown" : commit, Today(), FLAGS_time_budget, jobs, {}};
+    SetRecord record{set, commit.empty() ? "unknown" : commit, Today(), FLAGS_time_budget, jobs,
+                     FLAGS_work_budget > 0 ? FLAGS_work_budget : ZeroShotOptions().work_budget, FLAGS_threads, {}};
     for (size_t k = 0; k < models.size(); ++k) {
       if (models[k].set != set) continue;
       if (!finished_rows[k]) return;

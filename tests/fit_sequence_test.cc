@@ -82,6 +82,47 @@ TEST(FitSequence, FitsInTheInputFrameAndBlenderRebuildsIt) {
   fs::remove_all(dir);
 }
 
+std::string ReadBytes(const fs::path& path) {
+  std::ifstream in(path, std::ios::binary);
+  return std::string(std::istreambuf_iterator<char>(in), std::istreambuf_iterator<char>());
+}
+
+// The default budget is in work, so a seed gives the same bytes on one thread, on two, and on
+// two while another process keeps both cores busy.
+TEST(FitSequence, SameOutputForAnyThreadCountAndLoad) {
+  const fs::path dir = fs::temp_directory_path() / "opgraph_fit_sequence_threads";
+  fs::remove_all(dir);
+  fs::create_directories(dir);
+  Sequence truth = ParseSequence(Json::parse(R"({"operations": [
+      {"op": "GlobalAffineScale", "params": {"scale": [2, 2, 0.5]}},
+      {"op": "Extrude", "params": {"faces": {"normal": [0, 0, 1], "expect": 1}, "height": 0.8, "width": 0.5}},
+      {"op": "GlobalAffineTranslate", "params": {"offset": [3, 0, 1]}}]})"));
+  WriteObj(EvaluateSequence(&truth).back(), (dir / "target.obj").string());
+  auto run = [&](const std::string& name, int threads) {
+    const fs::path out = dir / name;
+    EXPECT_EQ(RunCommand(std::string(OPGRAPH_FIT_SEQUENCE) + " --input " + Quote((dir / "target.obj").string()) +
+                         " --out " + Quote(out.string()) + " --threads " + std::to_string(threads) + " --quiet > /dev/null"),
+              0);
+    return ReadBytes(out / "sequence.json") + ReadBytes(out / "result.obj");
+  };
+  const std::string one_thread = run("one", 1);
+  const std::string two_threads = run("two", 2);
+  // Two busy loops beside the run, ended by their process group.
+  const fs::path pid_file = dir / "load.pid";
+  ASSERT_EQ(RunCommand("setsid sh -c 'sh -c \"while :; do :; done\" & sh -c \"while :; do :; done\" & wait' "
+                       "> /dev/null 2>&1 & echo $! > " + Quote(pid_file.string())),
+            0);
+  const std::string loaded = run("loaded", 2);
+  const std::string pid = ReadBytes(pid_file);
+  RunCommand("kill -- -" + pid.substr(0, pid.find_first_of("\n")) + " 2> /dev/null");
+  ASSERT_GT(one_thread.size(), 100u);
+  EXPECT_TRUE(one_thread == two_threads) << "--threads 1 and --threads 2 differ";
+  EXPECT_TRUE(one_thread == loaded) << "a loaded machine changed the result";
+  const Json metrics = Json::parse(std::ifstream(dir / "loaded" / "metrics.json"));
+  EXPECT_NE(metrics["fit"]["ended_by"], "time budget");
+  fs::remove_all(dir);
+}
+
 TEST(FitSequence, BadInputFailsWithOneLineAndWritesNothing) {
   const fs::path dir = fs::temp_directory_path() / "opgraph_fit_sequence_bad";
   fs::remove_all(dir);
@@ -104,6 +145,8 @@ TEST(FitSequence, BadInputFailsWithOneLineAndWritesNothing) {
       {"--input " + Quote((dir / "garbage.stl").string()), "cannot read mesh"},
       {"--input " + Quote((dir / "missing.ply").string()), "cannot open file"},
       {"--input " + cube + " --time-budget 0", "--time-budget"},
+      {"--input " + cube + " --work-budget 12x", "--work-budget"},
+      {"--input " + cube + " --threads 0", "--threads"},
   };
   for (const auto& c : cases) {
     const fs::path out = dir / "out";
