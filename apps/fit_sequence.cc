@@ -50,6 +50,15 @@ bool ParseInteger(const std::string& text, long long lower, long long upper, lon
 
 opgraph::Json Number(double x) { return std::isfinite(x) ? opgraph::Json(x) : opgraph::Json(nullptr); }
 
+// How well the work budget's unit tracked this run's fit times (docs/zero-shot.md).
+opgraph::Json WorkPerTime(const std::vector<opgraph::FitCost>& costs) {
+  const opgraph::FitCostSummary summary = opgraph::SummariseFitCosts(costs);
+  return {{"fits", summary.fits},
+          {"microseconds_per_unit", summary.microseconds_per_unit},
+          {"fit_ratio_p10", summary.ratio_p10},
+          {"fit_ratio_p90", summary.ratio_p90}};
+}
+
 }  // namespace
 
 int main(int argc, char** argv) {
@@ -215,6 +224,7 @@ int main(int argc, char** argv) {
   if (zero_shot) {
     metrics["fit"] = {{"final_loss", Number(recovered.loss)},
                       {"fits", recovered.num_fits},
+                      {"work_per_time", WorkPerTime(recovered.fit_costs)},
                       {"work", recovered.work},
                       {"work_budget", zero_shot_options.work_budget},
                       {"seconds", recovered.seconds},

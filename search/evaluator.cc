@@ -17,8 +17,8 @@ namespace {
 
 // A fit's work: its Jacobian evaluations, each weighted by the parameters it differentiates
 // (forward-mode passes carry one derivative per parameter) and by the output's vertices beyond
-// the sampled residuals' share. On 296 search fits of three models (8 to 18,000 vertices) a
-// unit took 172 us on one core, each fit within 1.7x of that (docs/benchmarks.md).
+// the sampled residuals' share, so that it tracks a fit's time (metrics.json: fit.work_per_time;
+// docs/zero-shot.md).
 int64_t Work(const FitSummary& summary) {
   const double size = std::max(1, summary.num_parameters) * (1.0 + summary.num_vertices / 2000.0);
   return static_cast<int64_t>(std::ceil(summary.jacobian_evaluations * size));
@@ -62,6 +62,7 @@ Evaluator::Outcome Evaluator::FitUncached(const Layout& layout, FitPrecision pre
     const FitSummary summary =
         FitSequence(target_, &sequence, FitOptions(precision, document, layout.half_extent.minCoeff()));
     outcome.work = Work(summary);
+    outcome.seconds = summary.seconds;
     outcome.trial.layout = layout.WithParameters(SequenceToJson(sequence));
     Sequence replay = ParseSequence(outcome.trial.layout.Document());
     outcome.trial.loss = summary.final_loss;
@@ -135,6 +136,7 @@ std::vector<Trial> Evaluator::FitAll(const std::vector<Layout>& layouts, FitPrec
     const Outcome& outcome = outcomes[j];
     num_fits_ += outcome.fitted ? 1 : 0;
     work_ += outcome.work;
+    if (outcome.fitted) fit_costs_.push_back({outcome.work, outcome.seconds});
     if (!outcome.error.empty()) Note("fit failed: " + outcome.error);
     cache_.emplace(keys[jobs[j]], outcome.trial);
   }
@@ -151,6 +153,7 @@ FitSummary Evaluator::FitGates(Sequence* sequence, const Json& document, double 
   const FitSummary summary = FitSequence(target_, sequence, options);
   ++num_fits_;
   work_ += Work(summary);
+  fit_costs_.push_back({Work(summary), summary.seconds});
   Report();
   return summary;
 }

@@ -54,8 +54,9 @@ class Evaluator {
   // kComplete unless InBudget() has said no.
   SearchEnd search_end() const { return search_end_; }
   int64_t work() const { return work_; }
-  // Adds work done outside Fit() (the free-form stage's solves) to the count.
-  void AddWork(int64_t jacobian_evaluations) { work_ += jacobian_evaluations; }
+  // Each fit's work and wall time, in the order the search used them (the times, unlike the
+  // work, depend on the machine): how well work tracks time.
+  const std::vector<FitCost>& fit_costs() const { return fit_costs_; }
   // Reports progress to the options' callback (also done after each batch, by Log and by Note).
   void Report(const std::string& line = "") const;
   // The stage named in progress reports ("search" until the finishing steps begin) and the
@@ -82,6 +83,7 @@ class Evaluator {
     Trial trial;
     bool fitted = false;  // the fitter ran (a layout with too many ops is not fitted)
     int64_t work = 0;
+    double seconds = 0;
     std::string error;  // the engine's error, when it rejected the layout
   };
   Outcome FitUncached(const Layout& layout, FitPrecision precision) const;
@@ -96,6 +98,7 @@ class Evaluator {
   double stage_fraction_ = 0;  // after the search: the finishing step's start
   int num_fits_ = 0;
   int64_t work_ = 0;
+  std::vector<FitCost> fit_costs_;
   // The best trial logged as accepted, for progress.
   int best_ops_ = 0;
   double best_loss_ = std::numeric_limits<double>::infinity();

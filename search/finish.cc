@@ -131,6 +131,7 @@ ZeroShotResult Finish(Evaluator* evaluator, const Trial& best) {
   result.num_fits = evaluator->num_fits();
   result.seconds = evaluator->Seconds();
   result.work = evaluator->work();
+  result.fit_costs = evaluator->fit_costs();
   result.end = evaluator->search_end();
   result.search_complete = result.end == SearchEnd::kComplete;
   result.freeform = freeform;

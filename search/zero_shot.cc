@@ -1,5 +1,6 @@
 #include "search/zero_shot.h"
 
+#include <algorithm>
 #include <cmath>
 #include <stdexcept>
 
@@ -192,6 +193,25 @@ class StagedSearch {
 };
 
 }  // namespace
+
+FitCostSummary SummariseFitCosts(const std::vector<FitCost>& costs) {
+  FitCostSummary summary;
+  double work = 0, seconds = 0;
+  std::vector<double> per_unit;
+  for (const FitCost& cost : costs) {
+    if (cost.work <= 0 || cost.seconds < 1e-3) continue;
+    work += static_cast<double>(cost.work), seconds += cost.seconds;
+    per_unit.push_back(cost.seconds / static_cast<double>(cost.work));
+  }
+  summary.fits = static_cast<int>(per_unit.size());
+  if (per_unit.empty()) return summary;
+  const double mean = seconds / work;
+  summary.microseconds_per_unit = 1e6 * mean;
+  std::sort(per_unit.begin(), per_unit.end());
+  auto percentile = [&](double q) { return per_unit[static_cast<size_t>(q * (per_unit.size() - 1))] / mean; };
+  summary.ratio_p10 = percentile(0.1), summary.ratio_p90 = percentile(0.9);
+  return summary;
+}
 
 const char* SearchEndName(SearchEnd end) {
   switch (end) {

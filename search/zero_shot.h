@@ -49,10 +49,10 @@ const char* SearchEndName(SearchEnd end);
 
 struct ZeroShotOptions {
   // The budget in work: Jacobian evaluations of the fitted programs times the parameters they
-  // differentiate, summed over every fit (about 170 us a unit on one core of the machine
-  // docs/benchmarks.md names). Proposals stop at 65% of it; the finishing fits follow. Work
-  // does not depend on the machine, its load or the thread count, so a seed gives the same
-  // result everywhere.
+  // differentiate and a size factor, summed over every fit (about 200 us a unit here;
+  // docs/zero-shot.md). Proposals stop at 65% of it; the finishing steps follow. Work does not
+  // depend on the machine, its load or the thread count, so a seed gives the same result
+  // everywhere.
   int64_t work_budget = 500000;
   // A cap on wall time, in seconds (0: none). When the cap ends the search before the work
   // budget, the result depends on the machine's speed and load (metrics.json says which ended it).
@@ -76,17 +76,33 @@ struct ZeroShotOptions {
   std::string Check() const;
 };
 
+// One fit's work (ZeroShotOptions::work_budget's unit) and the wall time it took.
+struct FitCost {
+  int64_t work = 0;
+  double seconds = 0;
+};
+
 struct ZeroShotResult {
   Json sequence;         // the recovered sequence document (sequence.json)
   double loss = 0;       // final data loss (unit box, mean squared, both directions)
   int num_fits = 0;      // Ceres (or Adam) fits run
   int64_t work = 0;      // the work of all fits (the work budget's unit)
+  std::vector<FitCost> fit_costs;  // per fit, in the order the search used them
   double seconds = 0;
   std::vector<std::string> decisions;  // one line per accepted or rejected proposal
   SearchEnd end = SearchEnd::kComplete;
   bool search_complete = true;         // every proposal was tried (end == kComplete)
   bool freeform = false;               // whether free-form displacements were kept
 };
+
+// How well work tracks wall time over `costs` (fits of at least 1 ms): the mean time of a work
+// unit, and the 10th and 90th percentiles of each fit's time per unit over that mean.
+struct FitCostSummary {
+  int fits = 0;
+  double microseconds_per_unit = 0;
+  double ratio_p10 = 0, ratio_p90 = 0;
+};
+FitCostSummary SummariseFitCosts(const std::vector<FitCost>& costs);
 
 // Recovers a sequence for `target`. Deterministic for a given seed and work budget, whatever
 // the thread count and the machine's load, unless the time cap or a cancel ends the search.

@@ -143,6 +143,18 @@ TEST(ZeroShot, DeterministicForASeed) {
   EXPECT_EQ(first.sequence.dump(), second.sequence.dump());
 }
 
+TEST(ZeroShot, FitCostSummary) {
+  // Ten fits at 100 us a unit and one at 400 us; one too short to time.
+  std::vector<FitCost> costs(10, FitCost{1000, 0.1});
+  costs.push_back({1000, 0.4});
+  costs.push_back({5, 1e-4});
+  const FitCostSummary summary = SummariseFitCosts(costs);
+  EXPECT_EQ(summary.fits, 11);
+  EXPECT_NEAR(summary.microseconds_per_unit, 1.4 / 11000 * 1e6, 1e-9);
+  EXPECT_NEAR(summary.ratio_p10, 0.1 / (1.4 / 11), 1e-9);
+  EXPECT_NEAR(summary.ratio_p90, 0.1 / (1.4 / 11), 1e-9);
+}
+
 TEST(ZeroShot, ACallbackSeesProgressAndCanCancel) {
   Target target(BuildMesh(kShapes[3][1]), {}, TargetOptions());
   ZeroShotOptions options;
