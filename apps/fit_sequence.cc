@@ -8,8 +8,8 @@
 // Writes DIR/sequence.json, DIR/result.obj (in the input's frame and units),
 // DIR/steps/NN_<op>.obj, DIR/rebuild_blender.py, DIR/metrics.json and DIR/log.txt (the
 // controller's decisions). Progress on stdout: a bar on a terminal, plain lines otherwise.
-// --work-budget: the search's budget in work units (Jacobian evaluations times parameters; the same
-// result on any machine);
+// --work-budget: the search's budget in work units (search/zero_shot.h: Jacobian evaluations
+// weighted by the program's size; the same result on any machine);
 // --time-budget: a cap in seconds on top of it (none by default).
 // --threads: candidate fits in parallel (default: every hardware thread); the result does not
 // depend on it.

@@ -1,6 +1,8 @@
 #include "io/read_input.h"
 
 #include "core/obj_io.h"
+#include "io/pcd_header.h"
+#include "io/ply_header.h"
 
 #include <assimp/DefaultLogger.hpp>
 #include <assimp/Importer.hpp>
@@ -138,6 +140,7 @@ InputGeometry FromPclBlob(const pcl::PCLPointCloud2& blob) {
 }
 
 InputGeometry ReadPcd(const std::string& path) {
+  CheckPcdFile(path);  // PCL crashes on some malformed headers and trusts declared counts
   pcl::PCLPointCloud2 blob;
   pcl::PCDReader reader;
   if (reader.read(path, blob) < 0) Fail(path, "cannot read PCD point cloud");
@@ -182,23 +185,18 @@ InputGeometry ReadXyz(const std::string& path) {
 }
 
 // True when the PLY header declares no faces (a point cloud, which Assimp cannot load).
-bool PlyHasNoFaces(const std::string& path) {
-  std::ifstream in(path, std::ios::binary);
-  std::string line;
-  while (std::getline(in, line) && line.rfind("end_header", 0) != 0) {
-    std::istringstream words(line);
-    std::string element, name;
-    int count = 0;
-    if (words >> element >> name >> count && element == "element" && name == "face" && count > 0) return false;
-  }
-  return true;
-}
+constexpr double kMaxCoordinate = 1e12;
 
 void CheckGeometry(const std::string& path, InputGeometry* input) {
   const Positions<double>& vertices = input->mesh.vertices;
   if (vertices.empty()) Fail(path, "no vertices");
   for (size_t v = 0; v < vertices.size(); ++v) {
     if (!vertices[v].allFinite()) Fail(path, "vertex " + std::to_string(v) + " has a non-finite coordinate");
+    // Beyond this, double precision keeps under 1e-4 of a unit of detail and float32 Blender
+    // none: a stray huge coordinate would shrink the rest of the model to a point.
+    if (vertices[v].cwiseAbs().maxCoeff() > kMaxCoordinate) {
+      Fail(path, "vertex " + std::to_string(v) + " has a coordinate beyond 1e12 in magnitude");
+    }
   }
   Vec3d lo = vertices[0], hi = vertices[0];
   for (const Vec3d& p : vertices) lo = lo.cwiseMin(p), hi = hi.cwiseMax(p);
@@ -233,7 +231,7 @@ InputGeometry ReadInput(const std::string& path) {
     // Our own reader: it keeps one vertex list across groups and rejects non-finite numbers,
     // which Assimp's OBJ loader silently drops.
     input.mesh = ReadObj(path);
-  } else if (extension == ".ply" && PlyHasNoFaces(path)) {
+  } else if (extension == ".ply" && !CheckPlyFile(path).HasFaces()) {
     input = ReadPlyPoints(path);
   } else {
     Assimp::Importer probe;

@@ -9,6 +9,9 @@
 #include <fstream>
 #include <random>
 
+#include <pcl/io/pcd_io.h>
+#include <pcl/point_types.h>
+
 #include "core/obj_io.h"
 #include "core/surface_distance.h"
 
@@ -94,6 +97,27 @@ TEST(ReadInput, PointCloudsKeepPointsAndNormals) {
   }
 }
 
+// PCD files as PCL writes them (binary and compressed, with normals) pass the header check.
+TEST(ReadInput, PclWrittenPcdFilesAreRead) {
+  const fs::path dir = TestDir("pcl_pcd");
+  pcl::PointCloud<pcl::PointNormal> cloud;
+  for (int i = 0; i < 500; ++i) {
+    pcl::PointNormal p;
+    p.x = static_cast<float>(i % 10), p.y = static_cast<float>(i / 10 % 10), p.z = static_cast<float>(i / 100);
+    p.normal_x = 0, p.normal_y = 0, p.normal_z = 1, p.curvature = 0;
+    cloud.push_back(p);
+  }
+  ASSERT_EQ(pcl::io::savePCDFileBinary((dir / "binary.pcd").string(), cloud), 0);
+  ASSERT_EQ(pcl::io::savePCDFileBinaryCompressed((dir / "compressed.pcd").string(), cloud), 0);
+  ASSERT_EQ(pcl::io::savePCDFileASCII((dir / "ascii.pcd").string(), cloud), 0);
+  for (const char* name : {"binary.pcd", "compressed.pcd", "ascii.pcd"}) {
+    const InputGeometry read = ReadInput((dir / name).string());
+    ASSERT_EQ(read.mesh.NumVertices(), 500) << name;
+    EXPECT_EQ(read.mesh.vertices[123], Vec3d(3, 2, 1)) << name;
+    ASSERT_EQ(read.normals.size(), 500u) << name;
+  }
+}
+
 TEST(EstimatePointNormals, SphereNormalsAreRadial) {
   std::mt19937 rng(7);
   std::normal_distribution<double> gauss;
@@ -143,7 +167,28 @@ INSTANTIATE_TEST_SUITE_P(
                       BadFile{"words.xyz", "1 2 3\n4 five 6\n", "line 2: 'five' is not a number"},
                       BadFile{"inf.xyz", "1 2 3\n4 inf 6\n", "non-finite"},
                       BadFile{"point.xyz", "1 2 3\n1 2 3\n", "zero extent"},
-                      BadFile{"lines.obj", "v 0 0 0\nv 1 0 0\nl 1 2\n", "no mesh"}),
+                      BadFile{"lines.obj", "v 0 0 0\nv 1 0 0\nl 1 2\n", "no mesh"},
+                      BadFile{"huge.obj", "v 0 0 0\nv 1 0 0\nv 1e300 1 0\nf 1 2 3\n", "vertex 2 has a coordinate beyond 1e12"},
+                      BadFile{"billion.ply",
+                              "ply\nformat binary_little_endian 1.0\nelement vertex 1000000000\nproperty float x\n"
+                              "property float y\nproperty float z\nend_header\n\x01\x02\x03",
+                              "element 'vertex' declares 1000000000 but the file's 3 bytes of data cannot hold them"},
+                      BadFile{"billion_faces.ply",
+                              "ply\nformat ascii 1.0\nelement vertex 3\nproperty float x\nproperty float y\n"
+                              "property float z\nelement face 1000000000\nproperty list uchar int vertex_indices\n"
+                              "end_header\n0 0 0\n1 0 0\n0 1 0\n3 0 1 2\n",
+                              "element 'face' declares 1000000000"},
+                      BadFile{"hello.pcd", "hello\n", "'hello' is not a PCD header keyword"},
+                      BadFile{"noise.pcd", "\x89\x01\xff\x10\x1b[31m\x02\x03", "not a PCD header keyword"},
+                      BadFile{"billion.pcd",
+                              "VERSION 0.7\nFIELDS x y z\nSIZE 4 4 4\nTYPE F F F\nCOUNT 1 1 1\nWIDTH 1000000000\n"
+                              "HEIGHT 1\nPOINTS 1000000000\nDATA binary\n",
+                              "WIDTH '1000000000' is not an integer in [1, 100000000]"},
+                      BadFile{"short.pcd",
+                              "VERSION 0.7\nFIELDS x y z\nSIZE 4 4 4\nTYPE F F F\nCOUNT 1 1 1\nWIDTH 1000\n"
+                              "HEIGHT 1\nPOINTS 1000\nDATA binary\n\x01\x02",
+                              "need 12000 bytes of data; the file has 2"},
+                      BadFile{"no_z.pcd", "FIELDS x y\nSIZE 4 4\nTYPE F F\nWIDTH 1\nHEIGHT 1\nDATA ascii\n1 2\n", "no field 'z'"}),
     [](const ::testing::TestParamInfo<BadFile>& info) {
       std::string name = info.param.name;
       for (char& c : name) c = std::isalnum(static_cast<unsigned char>(c)) ? c : '_';

@@ -65,7 +65,7 @@ class Evaluator {
   void BeginStage(const std::string& stage, double fraction) { stage_ = stage, stage_fraction_ = fraction; }
   static constexpr double kSearchProgress = 0.85;
 
-  // A decision line: "[zero-shot] stage: what: loss a -> b accepted (n ops, k fits, t s)".
+  // A decision line: "[zero-shot] stage: what: loss a -> b accepted (n ops, k fits, w work)".
   void Log(const std::string& stage, const Trial& before, const Trial& after, bool accepted, const std::string& what);
   void Note(const std::string& line);  // a line as given, prefixed with "[zero-shot] "
 
@@ -78,7 +78,7 @@ class Evaluator {
   const Target& target_;
   ZeroShotOptions options_;
   FitterOptions search_options_, final_options_;
-  // One fit's trial, work and engine error.
+  // One fit's trial, work, wall time and engine error.
   struct Outcome {
     Trial trial;
     bool fitted = false;  // the fitter ran (a layout with too many ops is not fitted)
