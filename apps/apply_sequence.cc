@@ -1,10 +1,12 @@
 // apply_sequence SEQ.json --out DIR
 // Evaluates a design sequence and writes DIR/result.obj, DIR/steps/NN_<op>.obj and
-// DIR/rebuild_blender.py. Bad input: one line on stderr naming the problem, exit code 2, and
-// nothing written.
+// DIR/rebuild_blender.py, replacing an earlier run's DIR whole (apps/output_folder.h). Bad input
+// (an --out that is a file or a folder of other files among it): one line on stderr naming the
+// problem, exit code 2, and nothing written.
 #include <iostream>
 #include <string>
 
+#include "apps/output_folder.h"
 #include "apps/sequence_outputs.h"
 
 namespace {
@@ -34,6 +36,10 @@ int main(int argc, char** argv) {
     std::cerr << "apply_sequence: " << kUsage << "\n";
     return 2;
   }
+  if (const std::string problem = CheckOutputFolder(out_dir); !problem.empty()) {
+    std::cerr << "apply_sequence: " << problem << "\n";
+    return 2;
+  }
 
   // Everything is computed before anything is written, so a bad sequence leaves no files.
   SequenceOutputs outputs;
@@ -46,7 +52,10 @@ int main(int argc, char** argv) {
   }
 
   try {
-    WriteSequenceOutputs(outputs, out_dir, /*write_steps=*/true, "opgraph apply_sequence result (Blender frame, +Z up)");
+    StagedOutputFolder folder(out_dir);
+    WriteSequenceOutputs(outputs, folder.staging_dir(), /*write_steps=*/true,
+                         "opgraph apply_sequence result (Blender frame, +Z up)");
+    folder.Commit();
   } catch (const std::exception& e) {
     std::cerr << "apply_sequence: " << e.what() << "\n";
     return 1;

@@ -7,7 +7,8 @@
 // SEQ.json (ops and discrete choices fixed; its parameters are the start).
 // Writes DIR/sequence.json, DIR/result.obj (in the input's frame and units),
 // DIR/steps/NN_<op>.obj, DIR/rebuild_blender.py, DIR/metrics.json and DIR/log.txt (the
-// controller's decisions). Progress on stdout: a bar on a terminal, plain lines otherwise.
+// controller's decisions), replacing an earlier run's DIR whole (apps/output_folder.h).
+// Progress on stdout: a bar on a terminal, plain lines otherwise.
 // --work-budget: the search's budget in work units (search/zero_shot.h: Jacobian evaluations
 // weighted by the program's size; the same result on any machine);
 // --time-budget: a cap in seconds on top of it (none by default).
@@ -27,6 +28,7 @@
 
 #include <glog/logging.h>
 
+#include "apps/output_folder.h"
 #include "apps/search_progress_printer.h"
 #include "apps/sequence_outputs.h"
 #include "core/parallel_for.h"
@@ -142,6 +144,7 @@ int main(int argc, char** argv) {
     }
   }
   if (input_path.empty() || out_dir.empty()) return fail(kUsage);
+  if (const std::string problem = CheckOutputFolder(out_dir); !problem.empty()) return fail(problem);
   // A terminal gets a progress bar under the decision lines; a pipe or file gets plain lines.
   SearchProgressPrinter printer(&std::cout, isatty(STDOUT_FILENO) == 1);
   if (!quiet) {
@@ -242,10 +245,12 @@ int main(int argc, char** argv) {
   if (!target->is_cloud()) metrics["shape"]["sampling_noise_floor"] = SamplingNoiseFloor(target->shape(), metrics_options);
 
   try {
-    WriteSequenceOutputs(outputs, out_dir, /*write_steps=*/true,
+    StagedOutputFolder folder(out_dir);
+    WriteSequenceOutputs(outputs, folder.staging_dir(), /*write_steps=*/true,
                          "opgraph fit_sequence result (the input's frame and units)");
-    WriteFileAtomic(out_dir + "/metrics.json", metrics.dump(1) + "\n");
-    WriteFileAtomic(out_dir + "/log.txt", log);
+    WriteFileAtomic(folder.staging_dir() + "/metrics.json", metrics.dump(1) + "\n");
+    WriteFileAtomic(folder.staging_dir() + "/log.txt", log);
+    folder.Commit();
   } catch (const std::exception& e) {
     std::cerr << "fit_sequence: " << e.what() << "\n";
     return 1;

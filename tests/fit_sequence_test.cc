@@ -6,6 +6,7 @@
 
 #include <filesystem>
 #include <fstream>
+#include <set>
 #include <sys/wait.h>
 
 #include "core/metrics.h"
@@ -120,6 +121,45 @@ TEST(FitSequence, SameOutputForAnyThreadCountAndLoad) {
   EXPECT_TRUE(one_thread == loaded) << "a loaded machine changed the result";
   const Json metrics = Json::parse(std::ifstream(dir / "loaded" / "metrics.json"));
   EXPECT_NE(metrics["fit"]["ended_by"], "time budget");
+  fs::remove_all(dir);
+}
+
+// An --out that cannot take the outputs is refused before any work; a rerun replaces the folder
+// whole (no stale step of the earlier run), and a failed run leaves it as it was.
+TEST(OutputFolder, RefusedBeforeWorkOrReplacedWhole) {
+  const fs::path dir = fs::temp_directory_path() / "opgraph_output_folder";
+  fs::remove_all(dir);
+  fs::create_directories(dir / "users_folder");
+  std::ofstream(dir / "users_folder" / "notes.txt") << "keep me";
+  std::ofstream(dir / "a_file") << "keep me";
+  std::ofstream(dir / "truth.json") << kTruth;
+  std::ofstream(dir / "broken.json") << R"({"operations": [{"op": "Extrude"}]})";
+  const std::string apply = std::string(OPGRAPH_APPLY_SEQUENCE) + " ";
+  const std::string fit = std::string(OPGRAPH_FIT_SEQUENCE) + " --input " + Quote((dir / "truth.json").string()) + " ";
+  for (const char* taken : {"a_file", "users_folder"}) {
+    const std::string out = Quote((dir / taken).string());
+    EXPECT_EQ(RunCommand(apply + Quote((dir / "truth.json").string()) + " --out " + out + " > /dev/null 2>&1"), 2) << taken;
+    // fit_sequence refuses before reading its input (here not even a mesh).
+    EXPECT_EQ(RunCommand(fit + "--out " + out + " > /dev/null 2>&1"), 2) << taken;
+  }
+  EXPECT_EQ(ReadBytes(dir / "a_file"), "keep me");
+  EXPECT_EQ(ReadBytes(dir / "users_folder" / "notes.txt"), "keep me");
+
+  const fs::path run = dir / "run";
+  ASSERT_EQ(RunCommand(apply + Quote((dir / "truth.json").string()) + " --out " + Quote(run.string()) + " > /dev/null"), 0);
+  std::ofstream(run / "steps" / "09_Stale.obj") << "from an earlier run";
+  const std::string first = ReadBytes(run / "result.obj");
+  // A bad sequence fails and leaves the folder as it was.
+  EXPECT_EQ(RunCommand(apply + Quote((dir / "broken.json").string()) + " --out " + Quote(run.string()) + " 2> /dev/null"), 2);
+  EXPECT_TRUE(fs::exists(run / "steps" / "09_Stale.obj"));
+  // A rerun replaces it whole.
+  ASSERT_EQ(RunCommand(apply + Quote((dir / "truth.json").string()) + " --out " + Quote(run.string()) + " > /dev/null"), 0);
+  EXPECT_FALSE(fs::exists(run / "steps" / "09_Stale.obj"));
+  EXPECT_EQ(ReadBytes(run / "result.obj"), first);
+  std::set<std::string> entries;
+  for (const auto& entry : fs::directory_iterator(dir)) entries.insert(entry.path().filename().string());
+  EXPECT_EQ(entries, (std::set<std::string>{"a_file", "broken.json", "run", "truth.json", "users_folder"}))
+      << "a staging or old folder was left beside the output";
   fs::remove_all(dir);
 }
 
