@@ -2,12 +2,13 @@
 #pragma once
 
 #include <algorithm>
-#include <cctype>
 #include <cstdint>
 #include <filesystem>
 #include <fstream>
 #include <stdexcept>
 #include <string>
+
+#include "core/printable.h"
 
 namespace opgraph {
 
@@ -23,12 +24,7 @@ inline std::string ReadFilePrefix(const std::string& path, int64_t max_bytes, in
   return prefix;
 }
 
-// `text` quoted for a one-line message: cut to 24 characters, anything unprintable (a line
-// break, a terminal escape) shown as '?'.
-inline std::string Shown(const std::string& text) {
-  std::string shown = text.substr(0, 24);
-  for (char& c : shown) c = std::isprint(static_cast<unsigned char>(c)) ? c : '?';
-  return "'" + shown + (text.size() > 24 ? "...'" : "'");
-}
+// `text` quoted for a one-line message, cut to 24 characters, unprintable bytes as '?'.
+inline std::string Shown(const std::string& text) { return "'" + Printable(text, 24) + "'"; }
 
 }  // namespace opgraph

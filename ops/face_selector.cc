@@ -6,6 +6,7 @@
 #include <Eigen/Geometry>
 
 #include "core/geometry.h"
+#include "core/printable.h"
 
 namespace opgraph {
 
@@ -43,7 +44,7 @@ FaceSelector::FaceSelector(const Json& json, const std::string& field) : field_(
   for (auto it = json.begin(); it != json.end(); ++it) {
     static const std::vector<std::string> kKeys = {"normal", "normal_any", "min_dot", "box", "centers", "indices", "expect"};
     if (std::find(kKeys.begin(), kKeys.end(), it.key()) == kKeys.end()) {
-      throw FieldError(field + "." + it.key().substr(0, 40), "unknown key");
+      throw FieldError(field + "." + Printable(it.key()), "unknown key");
     }
   }
   if (json.contains("normal")) normals_.push_back(CheckedVector3(json["normal"], field + ".normal", -1e6, 1e6));
@@ -65,7 +66,7 @@ FaceSelector::FaceSelector(const Json& json, const std::string& field) : field_(
   if (json.contains("indices")) {
     indices_ = CheckedIndices(json["indices"], field + ".indices");
   }
-  if (json.contains("expect")) expect_ = static_cast<int>(CheckedNumber(json["expect"], field + ".expect", 1, 1e9));
+  if (json.contains("expect")) expect_ = CheckedInteger(json["expect"], field + ".expect", 1, 1000000000);
 }
 
 std::vector<int> FaceSelector::Resolve(const Mesh& mesh) const {

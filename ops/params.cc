@@ -4,6 +4,8 @@
 #include <cstdio>
 #include <sstream>
 
+#include "core/printable.h"
+
 namespace opgraph {
 
 namespace {
@@ -58,13 +60,16 @@ double ParamReader::Number(const std::string& key, double lower, double upper, d
   return Number(key, lower, upper);
 }
 
-int ParamReader::Integer(const std::string& key, int lower, int upper) {
-  const Json& v = Get(key);
-  if (!v.is_number_integer()) throw FieldError(key, "must be an integer");
-  const long long x = v.get<long long>();
+int ParamReader::Integer(const std::string& key, int lower, int upper) { return CheckedInteger(Get(key), key, lower, upper); }
+
+int CheckedInteger(const Json& value, const std::string& field, int lower, int upper) {
+  if (!value.is_number_integer()) throw FieldError(field, "must be an integer");
+  // Unsigned values above the signed range are out of range too (not wrapped).
+  const bool huge = value.is_number_unsigned() && value.get<unsigned long long>() > static_cast<unsigned long long>(upper);
+  const long long x = huge ? static_cast<long long>(upper) + 1 : value.get<long long>();
   if (x < lower || x > upper) {
-    throw FieldError(key, "value " + std::to_string(x) + " out of range " +
-                              "[" + std::to_string(lower) + ", " + std::to_string(upper) + "]");
+    throw FieldError(field, "value " + (huge ? value.dump() : std::to_string(x)) + " out of range " + "[" +
+                                std::to_string(lower) + ", " + std::to_string(upper) + "]");
   }
   return static_cast<int>(x);
 }
@@ -120,7 +125,7 @@ const Json& ParamReader::Raw(const std::string& key) { return Get(key); }
 void ParamReader::Finish() const {
   for (auto it = params_.begin(); it != params_.end(); ++it) {
     if (std::find(used_.begin(), used_.end(), it.key()) == used_.end()) {
-      throw FieldError(it.key().substr(0, 40), "unknown parameter");
+      throw FieldError(Printable(it.key()), "unknown parameter");
     }
   }
 }
@@ -151,7 +156,13 @@ std::vector<int> CheckedIndices(const Json& value, const std::string& field) {
   std::vector<int> indices;
   for (const Json& i : value) {
     if (!i.is_number_integer()) throw FieldError(field, "entries must be integers");
-    indices.push_back(static_cast<int>(CheckedNumber(i, field, 0, 1e9)));
+    indices.push_back(CheckedInteger(i, field, 0, 1000000000));
+  }
+  // A repeated index would select its element twice (a face extruded twice over).
+  std::vector<int> sorted = indices;
+  std::sort(sorted.begin(), sorted.end());
+  if (const auto repeat = std::adjacent_find(sorted.begin(), sorted.end()); repeat != sorted.end()) {
+    throw FieldError(field, "index " + std::to_string(*repeat) + " is listed twice");
   }
   return indices;
 }

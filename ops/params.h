@@ -63,6 +63,8 @@ class ParamReader {
 
 // Checks a JSON number (finite, in range) at `field`.
 double CheckedNumber(const Json& value, const std::string& field, double lower, double upper);
+// Checks a JSON integer (written without a fraction: 1.7 is refused, not truncated) in range.
+int CheckedInteger(const Json& value, const std::string& field, int lower, int upper);
 Vec3d CheckedVector3(const Json& value, const std::string& field, double lower, double upper);
 
 // Python literal of a finite double (round-trips exactly). Throws on NaN/inf.

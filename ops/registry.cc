@@ -3,6 +3,7 @@
 #include <map>
 #include <stdexcept>
 
+#include "core/printable.h"
 #include "ops/boolean.h"
 #include "ops/bevel.h"
 #include "ops/global_affine.h"
@@ -61,7 +62,7 @@ const std::map<std::string, Factory>& Factories() {
 
 std::unique_ptr<Op> CreateOp(const std::string& name, const Json& params) {
   const auto it = Factories().find(name);
-  if (it == Factories().end()) throw std::invalid_argument("unknown op '" + name.substr(0, 40) + "'");
+  if (it == Factories().end()) throw std::invalid_argument("unknown op '" + Printable(name) + "'");
   return it->second(params);
 }
 

@@ -1,4 +1,6 @@
 #include "ops/sequence.h"
+
+#include "core/printable.h"
 #include "ops/face_selector.h"
 #include "ops/vertex_selector.h"
 
@@ -10,7 +12,7 @@ namespace opgraph {
 namespace {
 
 std::string OpLabel(size_t index, const std::string& name) {
-  return "operation " + std::to_string(index) + " (" + name.substr(0, 40) + ")";
+  return "operation " + std::to_string(index) + " (" + Printable(name) + ")";
 }
 
 }  // namespace
@@ -18,9 +20,24 @@ std::string OpLabel(size_t index, const std::string& name) {
 Sequence ParseSequence(const Json& document) {
   Sequence sequence;
   if (!document.is_object()) throw SequenceError("sequence: top level must be a JSON object");
+  for (auto it = document.begin(); it != document.end(); ++it) {
+    static const char* const kKeys[] = {"format", "version", "start", "operations", "name", "description"};
+    if (std::find(std::begin(kKeys), std::end(kKeys), it.key()) == std::end(kKeys)) {
+      throw SequenceError("sequence: field '" + Printable(it.key()) + "': unknown field");
+    }
+  }
+  if (document.contains("format") && document["format"] != "opgraph-sequence") {
+    throw SequenceError("sequence: field 'format': must be \"opgraph-sequence\"");
+  }
+  for (const char* text : {"name", "description"}) {
+    if (document.contains(text) && !document[text].is_string()) {
+      throw SequenceError(std::string("sequence: field '") + text + "': must be a string");
+    }
+  }
   if (document.contains("version")) {
     const Json& v = document["version"];
-    if (!v.is_number_integer() || v.get<int>() != kSequenceFormatVersion) {
+    // Compared as JSON values: 4294967297 is not 1 (a conversion to int would wrap it).
+    if (!v.is_number_integer() || v != Json(kSequenceFormatVersion)) {
       throw SequenceError("sequence: field 'version': unsupported (this build reads version " +
                           std::to_string(kSequenceFormatVersion) + ")");
     }
@@ -48,7 +65,7 @@ Sequence ParseSequence(const Json& document) {
     try {
       for (auto it = entry.begin(); it != entry.end(); ++it) {
         if (it.key() != "op" && it.key() != "params" && it.key() != "gate") {
-          throw FieldError(it.key().substr(0, 40), "unknown field");
+          throw FieldError(Printable(it.key()), "unknown field");
         }
       }
       const Json params = entry.contains("params") ? entry["params"] : Json::object();

@@ -1,5 +1,7 @@
 #include "ops/vertex_displace.h"
 
+#include "core/printable.h"
+
 namespace opgraph {
 
 VertexDisplaceOp::VertexDisplaceOp(const Json& params) {
@@ -10,6 +12,9 @@ VertexDisplaceOp::VertexDisplaceOp(const Json& params) {
     const std::string field = "groups[" + std::to_string(g) + "]";
     if (!groups[g].is_object() || !groups[g].contains("verts") || !groups[g].contains("offset")) {
       throw FieldError(field, "needs 'verts' and 'offset'");
+    }
+    for (auto it = groups[g].begin(); it != groups[g].end(); ++it) {
+      if (it.key() != "verts" && it.key() != "offset") throw FieldError(field + "." + Printable(it.key()), "unknown key");
     }
     selectors_.emplace_back(groups[g]["verts"], field + ".verts");
     const Vec3d offset = CheckedVector3(groups[g]["offset"], field + ".offset", -1e6, 1e6);

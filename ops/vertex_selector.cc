@@ -1,5 +1,7 @@
 #include "ops/vertex_selector.h"
 
+#include "core/printable.h"
+
 namespace opgraph {
 
 const char* kVertexSelectorPython = R"PY(
@@ -19,7 +21,7 @@ VertexSelector::VertexSelector(const Json& json, const std::string& field) : fie
   if (!json.is_object()) throw FieldError(field, "must be an object with 'box' or 'indices'");
   for (auto it = json.begin(); it != json.end(); ++it) {
     if (it.key() != "box" && it.key() != "indices" && it.key() != "expect") {
-      throw FieldError(field + "." + it.key().substr(0, 40), "unknown key");
+      throw FieldError(field + "." + Printable(it.key()), "unknown key");
     }
   }
   if (json.contains("indices")) {
@@ -29,7 +31,7 @@ VertexSelector::VertexSelector(const Json& json, const std::string& field) : fie
   } else {
     throw FieldError(field, "needs 'box' or 'indices'");
   }
-  if (json.contains("expect")) expect_ = static_cast<int>(CheckedNumber(json["expect"], field + ".expect", 1, 1e9));
+  if (json.contains("expect")) expect_ = CheckedInteger(json["expect"], field + ".expect", 1, 1000000000);
 }
 
 std::vector<int> VertexSelector::Resolve(const Mesh& mesh) const {
