@@ -1,9 +1,10 @@
-// apply_sequence SEQ.json --out DIR
+// apply_sequence SEQ.json --out DIR [--max-ops N]
 // Evaluates a design sequence and writes DIR/result.obj, DIR/steps/NN_<op>.obj and
 // DIR/rebuild_blender.py, replacing an earlier run's DIR whole (apps/output_folder.h). Bad input
 // (an --out that is a file or a folder of other files among it): one line on stderr naming the
 // problem, exit code 2, and nothing written.
 #include <iostream>
+#include <stdexcept>
 #include <string>
 
 #include "apps/output_folder.h"
@@ -11,17 +12,29 @@
 
 namespace {
 
-constexpr const char* kUsage = "usage: apply_sequence SEQ.json --out DIR";
+constexpr const char* kUsage = "usage: apply_sequence SEQ.json --out DIR [--max-ops N]";
+
+// One step file is written per op: a sequence longer than this is refused (--max-ops).
+constexpr long long kDefaultMaxOps = 1000;
 
 }  // namespace
 
 int main(int argc, char** argv) {
   using namespace opgraph;
   std::string sequence_path, out_dir;
+  long long max_ops = kDefaultMaxOps;
   for (int i = 1; i < argc; ++i) {
     const std::string arg = argv[i];
     if (arg == "--out" && i + 1 < argc) {
       out_dir = argv[++i];
+    } else if (arg == "--max-ops" && i + 1 < argc) {
+      const std::string value = argv[++i];
+      if (value.empty() || value.size() > 7 || value.find_first_not_of("0123456789") != std::string::npos ||
+          std::stoll(value) < 1) {
+        std::cerr << "apply_sequence: --max-ops: expected an integer in [1, 9999999]\n";
+        return 2;
+      }
+      max_ops = std::stoll(value);
     } else if (arg == "-h" || arg == "--help") {
       std::cout << kUsage << "\n";
       return 0;
@@ -45,6 +58,10 @@ int main(int argc, char** argv) {
   SequenceOutputs outputs;
   try {
     Sequence sequence = LoadSequence(sequence_path);
+    if (static_cast<long long>(sequence.ops.size()) > max_ops) {
+      throw std::runtime_error(sequence_path + ": " + std::to_string(sequence.ops.size()) + " operations, above --max-ops " +
+                               std::to_string(max_ops));
+    }
     outputs = RenderSequenceOutputs(&sequence);
   } catch (const std::exception& e) {
     std::cerr << "apply_sequence: " << e.what() << "\n";

@@ -5,6 +5,7 @@
 
 #include <ceres/jet.h>
 
+#include <cstdint>
 #include <memory>
 #include <string>
 #include <vector>
@@ -30,6 +31,11 @@ struct ParamSpec {
   double upper;
   double identity;
 };
+
+// The most faces one op may output, and all steps of a sequence together: beyond them a
+// sequence (20 Subdivisions, each in range) would exhaust memory before it fails.
+constexpr int64_t kMaxOpFaces = 2000000;
+constexpr int64_t kMaxSequenceFaces = 4 * kMaxOpFaces;
 
 class Op {
  public:

@@ -117,6 +117,7 @@ Mesh ApplyOp(Op* op, double gate, const Mesh& input) {
 std::vector<Mesh> EvaluateSequence(Sequence* sequence) {
   std::vector<Mesh> steps;
   Mesh current = sequence->StartMesh();
+  int64_t total_faces = 0;
   for (size_t i = 0; i < sequence->ops.size(); ++i) {
     Op& op = *sequence->ops[i];
     try {
@@ -126,6 +127,12 @@ std::vector<Mesh> EvaluateSequence(Sequence* sequence) {
     }
     const std::string problem = current.Validate();
     if (!problem.empty()) throw SequenceError(OpLabel(i, op.Name()) + ": result invalid: " + problem);
+    total_faces += static_cast<int64_t>(current.faces.size());
+    if (static_cast<int64_t>(current.faces.size()) > kMaxOpFaces || total_faces > kMaxSequenceFaces) {
+      throw SequenceError(OpLabel(i, op.Name()) + ": output too large: " + std::to_string(current.faces.size()) +
+                          " faces (" + std::to_string(total_faces) + " over the steps so far; the limits are " +
+                          std::to_string(kMaxOpFaces) + " and " + std::to_string(kMaxSequenceFaces) + ")");
+    }
     steps.push_back(current);
   }
   return steps;

@@ -78,6 +78,13 @@ SubdivisionOp::SubdivisionOp(const Json& params) {
 
 void SubdivisionOp::Prepare(const Mesh& input) {
   if (input.faces.empty()) throw FieldError("levels", "the input mesh has no faces");
+  // The first level splits an n-gon into n quads, each later level a quad into 4.
+  int64_t faces = 0;
+  for (const Polygon& face : input.faces) faces += static_cast<int64_t>(face.size()) << (2 * (levels_ - 1));
+  if (faces > kMaxOpFaces) {
+    throw FieldError("levels", "would make " + std::to_string(faces) + " faces, above the limit of " +
+                                   std::to_string(kMaxOpFaces));
+  }
   num_input_vertices_ = input.NumVertices();
   const std::unique_ptr<TopologyRefiner> catmark = RefineUniformly(input, Sdc::SCHEME_CATMARK, levels_);
   const std::unique_ptr<TopologyRefiner> bilinear = RefineUniformly(input, Sdc::SCHEME_BILINEAR, levels_);

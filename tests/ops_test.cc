@@ -219,6 +219,28 @@ TEST(Boolean, RejectsOpenInput) {
   }
 }
 
+// --max-ops bounds the step files apply_sequence writes.
+TEST(ApplySequence, RefusesMoreOpsThanMaxOps) {
+  const fs::path dir = fs::temp_directory_path() / "opgraph_max_ops";
+  fs::remove_all(dir);
+  fs::create_directories(dir);
+  std::ofstream(dir / "seq.json") << R"({"operations": [
+      {"op": "GlobalAffineScale", "params": {"scale": [1, 2, 1]}},
+      {"op": "GlobalAffineScale", "params": {"scale": [1, 1, 2]}},
+      {"op": "GlobalAffineScale", "params": {"scale": [2, 1, 1]}}]})";
+  const std::string apply = std::string(OPGRAPH_APPLY_SEQUENCE) + " " + ShellQuote((dir / "seq.json").string()) +
+                            " --out " + ShellQuote((dir / "out").string());
+  const int refused = std::system((apply + " --max-ops 2 2> " + ShellQuote((dir / "err.txt").string())).c_str());
+  ASSERT_TRUE(WIFEXITED(refused));
+  EXPECT_EQ(WEXITSTATUS(refused), 2);
+  EXPECT_FALSE(fs::exists(dir / "out"));
+  std::string line;
+  std::getline(std::ifstream(dir / "err.txt"), line);
+  EXPECT_NE(line.find("3 operations, above --max-ops 2"), std::string::npos) << line;
+  EXPECT_EQ(std::system((apply + " --max-ops 3 > /dev/null").c_str()), 0);
+  fs::remove_all(dir);
+}
+
 // Bad input: one line naming the problem, exit code 2, nothing written.
 struct BadInput {
   const char* name;
@@ -257,6 +279,14 @@ INSTANTIATE_TEST_SUITE_P(
     Errors, BadSequence,
     ::testing::Values(
         BadInput{"missing_file", "", "cannot open file"},
+        BadInput{"twenty_subdivisions", R"({"operations": [{"op": "Subdivision", "params": {"levels": 1}}, {"op": "Subdivision", "params": {"levels": 1}}, {"op": "Subdivision", "params": {"levels": 1}}, {"op": "Subdivision", "params": {"levels": 1}}, {"op": "Subdivision", "params": {"levels": 1}}, {"op": "Subdivision", "params": {"levels": 1}}, {"op": "Subdivision", "params": {"levels": 1}}, {"op": "Subdivision", "params": {"levels": 1}}, {"op": "Subdivision", "params": {"levels": 1}}, {"op": "Subdivision", "params": {"levels": 1}}, {"op": "Subdivision", "params": {"levels": 1}}, {"op": "Subdivision", "params": {"levels": 1}}, {"op": "Subdivision", "params": {"levels": 1}}, {"op": "Subdivision", "params": {"levels": 1}}, {"op": "Subdivision", "params": {"levels": 1}}, {"op": "Subdivision", "params": {"levels": 1}}, {"op": "Subdivision", "params": {"levels": 1}}, {"op": "Subdivision", "params": {"levels": 1}}, {"op": "Subdivision", "params": {"levels": 1}}, {"op": "Subdivision", "params": {"levels": 1}}]})",
+                 "operation 9 (Subdivision): field 'levels': would make 6291456 faces, above the limit of 2000000"},
+        BadInput{"cuts_then_subdivision_6",
+                 R"({"operations": [{"op": "LoopCut", "params": {"axis": "X", "cuts": 64, "near": [0, 0, 0]}},
+                                    {"op": "LoopCut", "params": {"axis": "Y", "cuts": 64, "near": [0, 0, 0]}},
+                                    {"op": "LoopCut", "params": {"axis": "Z", "cuts": 64, "near": [0, 0, 0]}},
+                                    {"op": "Subdivision", "params": {"levels": 6}}]})",
+                 "operation 3 (Subdivision): field 'levels': would make"},
         BadInput{"unknown_top_level", R"({"operations": [], "operatoins": []})", "sequence: field 'operatoins': unknown field"},
         BadInput{"huge_version", R"({"version": 4294967297, "operations": []})", "sequence: field 'version': unsupported"},
         BadInput{"other_format", R"({"format": "obj", "operations": []})", "sequence: field 'format'"},
