@@ -2,9 +2,13 @@
 
 #include <unistd.h>
 
+#include <algorithm>
 #include <filesystem>
+#include <iterator>
 #include <stdexcept>
 #include <system_error>
+
+#include "core/printable.h"
 
 namespace opgraph {
 namespace {
@@ -24,8 +28,17 @@ std::string CheckOutputFolder(const std::string& out_dir) {
   std::error_code error;
   const fs::path out(out_dir);
   if (fs::exists(out, error) && !fs::is_directory(out, error)) return "--out '" + out_dir + "' exists and is not a folder";
-  if (fs::is_directory(out, error) && !fs::is_empty(out, error) && !fs::exists(out / "sequence.json", error)) {
-    return "--out '" + out_dir + "' is a folder of other files (no sequence.json); it would be replaced, so choose another";
+  if (fs::is_directory(out, error)) {
+    // Replacing the folder deletes what it holds: only an earlier run's files may be there.
+    static const char* const kOurs[] = {"sequence.json", "result.obj",  "rebuild_blender.py", "metrics.json",
+                                        "log.txt",       "blender.obj", "steps"};
+    for (const fs::directory_entry& entry : fs::directory_iterator(out, error)) {
+      const std::string name = entry.path().filename().string();
+      if (std::find(std::begin(kOurs), std::end(kOurs), name) == std::end(kOurs)) {
+        return "--out '" + out_dir + "' holds '" + Printable(name) +
+               "', which opgraph did not write; the folder would be replaced, so choose another";
+      }
+    }
   }
   fs::path parent = fs::absolute(out, error).lexically_normal();
   if (parent.filename().empty()) parent = parent.parent_path();

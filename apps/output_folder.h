@@ -8,8 +8,8 @@
 namespace opgraph {
 
 // Empty when `out_dir` can take a run's outputs, else the problem (for a one-line error before
-// any work): it is a file; it is a folder holding files but no sequence.json (a folder of the
-// user's, which replacing would delete); or its parent folder cannot be created or written.
+// any work): it is a file; it is a folder holding anything but an earlier run's outputs
+// (replacing it would delete the user's files); or its parent folder cannot be written.
 std::string CheckOutputFolder(const std::string& out_dir);
 
 class StagedOutputFolder {

@@ -131,6 +131,7 @@ TEST(OutputFolder, RefusedBeforeWorkOrReplacedWhole) {
   fs::remove_all(dir);
   fs::create_directories(dir / "users_folder");
   std::ofstream(dir / "users_folder" / "notes.txt") << "keep me";
+  std::ofstream(dir / "users_folder" / "sequence.json") << kTruth;  // theirs, beside their notes
   std::ofstream(dir / "a_file") << "keep me";
   std::ofstream(dir / "truth.json") << kTruth;
   std::ofstream(dir / "broken.json") << R"({"operations": [{"op": "Extrude"}]})";
@@ -144,6 +145,7 @@ TEST(OutputFolder, RefusedBeforeWorkOrReplacedWhole) {
   }
   EXPECT_EQ(ReadBytes(dir / "a_file"), "keep me");
   EXPECT_EQ(ReadBytes(dir / "users_folder" / "notes.txt"), "keep me");
+  EXPECT_EQ(ReadBytes(dir / "users_folder" / "sequence.json"), kTruth);
 
   const fs::path run = dir / "run";
   ASSERT_EQ(RunCommand(apply + Quote((dir / "truth.json").string()) + " --out " + Quote(run.string()) + " > /dev/null"), 0);
