@@ -3,6 +3,7 @@
 // DIR/rebuild_blender.py, replacing an earlier run's DIR whole (apps/output_folder.h). Bad input
 // (an --out that is a file or a folder of other files among it): one line on stderr naming the
 // problem, exit code 2, and nothing written.
+#include <filesystem>
 #include <iostream>
 #include <stdexcept>
 #include <string>
@@ -62,7 +63,10 @@ int main(int argc, char** argv) {
       throw std::runtime_error(sequence_path + ": " + std::to_string(sequence.ops.size()) + " operations, above --max-ops " +
                                std::to_string(max_ops));
     }
-    outputs = RenderSequenceOutputs(&sequence);
+    BlenderScriptOptions blender;
+    blender.name = BlenderObjectName(sequence.name.empty() ? std::filesystem::path(sequence_path).stem().string()
+                                                           : sequence.name);
+    outputs = RenderSequenceOutputs(&sequence, blender);
   } catch (const std::exception& e) {
     std::cerr << "apply_sequence: " << e.what() << "\n";
     return 2;

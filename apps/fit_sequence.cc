@@ -1,6 +1,6 @@
 // fit_sequence --input TARGET --out DIR [--init SEQ.json] [--work-budget N] [--time-budget S]
 //              [--max-ops N] [--seed N] [--optimizer ceres|adam] [--fit-gates] [--loss none|huber|cauchy]
-//              [--samples N] [--threads N] [--no-freeform] [--quiet]
+//              [--samples N] [--threads N] [--no-freeform] [--blender-axes import|raw] [--quiet]
 // Without --init (the main job): recovers a design sequence for TARGET (a mesh or point cloud,
 // any format io/read_input reads) from scratch with the zero-shot controller
 // (search/zero_shot.h). With --init: fits every continuous parameter of the sequence skeleton
@@ -15,10 +15,14 @@
 // --threads: candidate fits in parallel (default: every hardware thread); the result does not
 // depend on it.
 // --no-freeform: no free-form displacements of the cage as the last stage (search/freeform.h).
+// --blender-axes: `import` (default) places the rebuilt Blender object on the input as Blender's
+// default importer for its format imports it (io/blender_import_frame.h); `raw` keeps the file's
+// axes as Blender's.
 // --loss: a robust loss (scale 0.02 of the target's unit box) against outliers in the target.
 // Bad input: one line on stderr naming the problem, exit code 2, and nothing written.
 #include <cmath>
 #include <cstdlib>
+#include <filesystem>
 #include <iostream>
 #include <limits>
 #include <sstream>
@@ -34,6 +38,7 @@
 #include "core/parallel_for.h"
 #include "core/metrics.h"
 #include "core/obj_io.h"
+#include "io/blender_import_frame.h"
 #include "solver/fitter.h"
 #include "search/zero_shot.h"
 
@@ -41,7 +46,7 @@ namespace {
 
 constexpr const char* kUsage =
     "usage: fit_sequence --input TARGET --out DIR [--init SEQ.json] [--work-budget N] [--time-budget S] [--max-ops N] [--seed N] "
-    "[--optimizer ceres|adam] [--fit-gates] [--loss none|huber|cauchy] [--samples N] [--threads N] [--no-freeform] [--quiet]";
+    "[--optimizer ceres|adam] [--fit-gates] [--loss none|huber|cauchy] [--samples N] [--threads N] [--no-freeform] [--blender-axes import|raw] [--quiet]";
 
 // A whole-string non-negative integer in [lower, upper], else false.
 bool ParseInteger(const std::string& text, long long lower, long long upper, long long* value) {
@@ -75,6 +80,7 @@ int main(int argc, char** argv) {
   ZeroShotOptions zero_shot_options;
   zero_shot_options.num_threads = HardwareThreads();
   bool quiet = false;
+  bool blender_axes_import = true;
   auto fail = [](const std::string& message) {
     std::cerr << "fit_sequence: " << message << "\n";
     return 2;
@@ -135,6 +141,10 @@ int main(int argc, char** argv) {
     } else if (arg == "--max-ops" && has_value) {
       if (!ParseInteger(argv[++i], 3, 1000, &number)) return fail("--max-ops: expected an integer in [3, 1000]");
       zero_shot_options.max_ops = static_cast<int>(number);
+    } else if (arg == "--blender-axes" && has_value) {
+      const std::string axes = argv[++i];
+      if (axes != "import" && axes != "raw") return fail("--blender-axes: expected 'import' or 'raw'");
+      blender_axes_import = axes == "import";
     } else if (arg == "--no-freeform") {
       zero_shot_options.freeform = false;
     } else if (arg == "--quiet") {
@@ -180,7 +190,11 @@ int main(int argc, char** argv) {
     return fail(e.what());
   }
   try {
-    outputs = RenderSequenceOutputs(&sequence);
+    sequence.name = std::filesystem::path(input_path).stem().string();
+    BlenderScriptOptions blender;
+    blender.name = BlenderObjectName(sequence.name);
+    if (blender_axes_import) blender.blender_from_sequence = BlenderImportFrame(input_path);
+    outputs = RenderSequenceOutputs(&sequence, blender);
   } catch (const std::exception& e) {
     std::cerr << "fit_sequence: the fitted sequence does not re-evaluate: " << e.what() << "\n";
     return 1;

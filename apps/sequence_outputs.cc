@@ -7,12 +7,23 @@
 
 namespace opgraph {
 
-SequenceOutputs RenderSequenceOutputs(Sequence* sequence) {
+SequenceOutputs RenderSequenceOutputs(Sequence* sequence, const BlenderScriptOptions& blender) {
   SequenceOutputs outputs;
   outputs.steps = EvaluateSequence(sequence);
   for (const auto& op : sequence->ops) outputs.step_names.push_back(op->Name());
   outputs.result = outputs.steps.empty() ? sequence->StartMesh() : outputs.steps.back();
-  outputs.blender_script = BlenderScript(*sequence);
+  // A transform that becomes the object's moves every step before it too.
+  const std::vector<BlenderStepPlan> plan = PlanBlenderSteps(*sequence);
+  for (size_t j = 0; j < plan.size(); ++j) {
+    if (!plan[j].object_transform) continue;
+    const Op& transform = *sequence->ops[j];
+    for (size_t k = 0; k < j; ++k) {
+      Positions<double> moved;
+      transform.Evaluate(transform.params().data(), 1.0, outputs.steps[k].vertices, &moved);
+      outputs.steps[k].vertices = std::move(moved);
+    }
+  }
+  outputs.blender_script = BlenderScript(*sequence, blender);
   outputs.sequence_json = SequenceToJson(*sequence).dump(1) + "\n";
   return outputs;
 }

@@ -5,12 +5,15 @@
 #include <string>
 #include <vector>
 
+#include "ops/blender_script.h"
 #include "ops/sequence.h"
 
 namespace opgraph {
 
 struct SequenceOutputs {
-  std::vector<Mesh> steps;             // the mesh after each op
+  // The mesh after each op, as Blender shows the object then: with the transforms that become
+  // the object's (ops/blender_script.h), so every step sits where the result does.
+  std::vector<Mesh> steps;
   std::vector<std::string> step_names; // op names
   Mesh result;                         // the final mesh (the start cube for an empty sequence)
   std::string blender_script;          // rebuild_blender.py
@@ -18,7 +21,7 @@ struct SequenceOutputs {
 };
 
 // Evaluates `sequence` and renders its outputs. Throws SequenceError (nothing is written).
-SequenceOutputs RenderSequenceOutputs(Sequence* sequence);
+SequenceOutputs RenderSequenceOutputs(Sequence* sequence, const BlenderScriptOptions& blender = {});
 
 // Writes DIR/result.obj, DIR/rebuild_blender.py, DIR/sequence.json and, with `write_steps`,
 // DIR/steps/NN_<op>.obj, creating DIR. Throws std::exception on an I/O failure.

@@ -43,6 +43,9 @@ class BevelOp : public OpBase<BevelOp> {
   void Prepare(const Mesh& input) override;
   Json ParamsToJson() const override;
   std::string BlenderCode() const override;
+  BlenderStage Stage() const override { return BlenderStage::kModifier; }
+  // Widths and the angle limit are kept by rotations and translations.
+  bool CommutesWithTransform(bool rigid) const override { return rigid; }
 
   template <typename T>
   void Apply(const T* p, const T& gate, const Positions<T>& in, Positions<T>* out) const;

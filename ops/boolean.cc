@@ -306,6 +306,35 @@ Vec3<T> Crossing(const Vec3<T>& edge_from, const Vec3<T>& edge_to, const Vec3<T>
   return edge_from + t * (edge_to - edge_from);
 }
 
+
+
+// CGAL can return one point twice, a rounding apart (a primitive's edge through the diagonal of a
+// triangulated input face, met from both triangles), where Blender's exact boolean has one
+// vertex: triangles are remapped to the first of points within `tolerance` of each other, and
+// those that collapse are dropped (the unused duplicates stay, unreferenced).
+void WeldCoincidentPoints(double tolerance, TriangleSoup* soup) {
+  const int n = static_cast<int>(soup->vertices.size());
+  std::vector<int> order(n), same(n);
+  for (int v = 0; v < n; ++v) order[v] = same[v] = v;
+  std::sort(order.begin(), order.end(), [soup](int x, int y) { return soup->vertices[x].x() < soup->vertices[y].x(); });
+  bool welded = false;
+  for (int i = 0; i < n; ++i) {
+    const int u = order[i];
+    if (same[u] != u) continue;
+    for (int j = i + 1; j < n && soup->vertices[order[j]].x() - soup->vertices[u].x() <= tolerance; ++j) {
+      const int w = order[j];
+      if (same[w] == w && (soup->vertices[w] - soup->vertices[u]).norm() <= tolerance) same[w] = u, welded = true;
+    }
+  }
+  if (!welded) return;
+  std::vector<std::array<int, 3>> triangles;
+  for (const auto& t : soup->triangles) {
+    const std::array<int, 3> w = {same[t[0]], same[t[1]], same[t[2]]};
+    if (w[0] != w[1] && w[1] != w[2] && w[0] != w[2]) triangles.push_back(w);
+  }
+  soup->triangles = std::move(triangles);
+}
+
 }  // namespace
 
 std::string SolidProblem(const Mesh& mesh) {
@@ -462,6 +491,8 @@ void BooleanOp::Prepare(const Mesh& input) {
                                         " degrees): the intersection is ill-conditioned");
     }
   }
+
+  WeldCoincidentPoints(1e-3 * tolerance, &result);
 
   // Source polygon of each result triangle: that of the operand triangle it is (uncut), else the
   // one its centroid lies on, parallel to it; the input mesh wins where both operands overlap.
@@ -712,7 +743,7 @@ std::string BooleanOp::BlenderCode() const {
           ? "bmesh.ops.create_cube(bm, size=1.0)\n"
           : "bmesh.ops.create_cone(bm, cap_ends=True, cap_tris=False, segments=" +
                 std::to_string(Segments(primitive_)) + ", radius1=0.5, radius2=0.5, depth=1.0)\n";
-  return "cutter_mesh = bpy.data.meshes.new(" + PyWord("cutter") + ")\n"
+  return "cutter_mesh = bpy.data.meshes.new(obj.name + ' cutter')\n"
          "bm = bmesh.new()\n" + create +
          "bmesh.ops.transform(bm, verts=bm.verts, matrix=Matrix.Translation(" +
          PyVec(Vec3d(params_[6], params_[7], params_[8])) + ") @ Euler(" +
@@ -720,8 +751,9 @@ std::string BooleanOp::BlenderCode() const {
          PyVec(Vec3d(params_[0], params_[1], params_[2])) + ").to_4x4())\n"
          "bm.to_mesh(cutter_mesh)\n"
          "bm.free()\n"
-         "cutter = bpy.data.objects.new(" + PyWord("cutter") + ", cutter_mesh)\n"
-         "bpy.context.scene.collection.objects.link(cutter)\n"
+         "cutter = bpy.data.objects.new(obj.name + ' cutter', cutter_mesh)\n"
+         "collection.objects.link(cutter)\n"
+         "cutter.parent = obj  # the cutter follows the object's transform\n"
          "cutter.hide_set(True)\n"
          "cutter.hide_render = True\n"
          "m = obj.modifiers.new(" + PyWord("Boolean") + ", " + PyWord("BOOLEAN") + ")\n"

@@ -62,6 +62,7 @@ class BooleanOp : public OpBase<BooleanOp> {
   const std::vector<Polygon>& OutputFaces(double gate) const override;
   Json ParamsToJson() const override;
   std::string BlenderCode() const override;
+  BlenderStage Stage() const override { return BlenderStage::kModifier; }
 
   template <typename T>
   void Apply(const T* p, const T& gate, const Positions<T>& in, Positions<T>* out) const;

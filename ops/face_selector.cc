@@ -35,7 +35,7 @@ def select_faces(bm, normals, min_dot, lo, hi, centers, indices, expect):
                         picked.append(best)
             found = sorted(picked, key=lambda f: f.index)
     if not found or (expect >= 0 and len(found) != expect):
-        sys.exit('face selection found %d faces, expected %d' % (len(found), expect))
+        raise RuntimeError('face selection found %d faces, expected %d' % (len(found), expect))
     return found
 )PY";
 

@@ -75,16 +75,15 @@ Json GlobalAffineOp::ParamsToJson() const {
   }
 }
 
-std::string GlobalAffineOp::BlenderCode() const {
+std::string GlobalAffineOp::PyMatrix() const {
   const Vec3d v(params_[0], params_[1], params_[2]);
   switch (kind_) {
-    case Kind::kRotate:
-      return "edit_mesh(obj).transform(Euler(" + PyVec(v) + ", 'XYZ').to_matrix().to_4x4())\n";
-    case Kind::kScale:
-      return "edit_mesh(obj).transform(Matrix.Diagonal(" + PyVec(v) + ").to_4x4())\n";
-    default:
-      return "edit_mesh(obj).transform(Matrix.Translation(" + PyVec(v) + "))\n";
+    case Kind::kRotate: return "Euler(" + PyVec(v) + ", 'XYZ').to_matrix().to_4x4()";
+    case Kind::kScale: return "Matrix.Diagonal(" + PyVec(v) + ").to_4x4()";
+    default: return "Matrix.Translation(" + PyVec(v) + ")";
   }
 }
+
+std::string GlobalAffineOp::BlenderCode() const { return "edit_mesh(obj).transform(" + PyMatrix() + ")\n"; }
 
 }  // namespace opgraph

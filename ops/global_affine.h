@@ -21,6 +21,10 @@ class GlobalAffineOp : public OpBase<GlobalAffineOp> {
   void Prepare(const Mesh& input) override { KeepTopology(input); }
   Json ParamsToJson() const override;
   std::string BlenderCode() const override;
+  BlenderStage Stage() const override { return BlenderStage::kTransform; }
+  // The transform as a Python mathutils 4x4 Matrix expression.
+  std::string PyMatrix() const;
+  bool rigid() const { return kind_ != Kind::kScale; }
 
   template <typename T>
   void Apply(const T* p, const T& gate, const Positions<T>& in, Positions<T>* out) const;

@@ -24,6 +24,7 @@ class MirrorOp : public OpBase<MirrorOp> {
   void Prepare(const Mesh& input) override;
   Json ParamsToJson() const override;
   std::string BlenderCode() const override;
+  BlenderStage Stage() const override { return BlenderStage::kModifier; }
 
   template <typename T>
   void Apply(const T* p, const T& gate, const Positions<T>& in, Positions<T>* out) const;

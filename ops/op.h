@@ -37,6 +37,13 @@ struct ParamSpec {
 constexpr int64_t kMaxOpFaces = 2000000;
 constexpr int64_t kMaxSequenceFaces = 4 * kMaxOpFaces;
 
+// How an op appears in Blender.
+enum class BlenderStage {
+  kMeshEdit,  // edits the mesh data: the modifiers above it are applied first
+  kModifier,  // a modifier on the object's stack
+  kTransform, // a global transform: the object's transform where the modifiers after it allow
+};
+
 class Op {
  public:
   virtual ~Op() = default;
@@ -69,6 +76,11 @@ class Op {
   // Python statements applying the op to the object `obj` in rebuild_blender.py, using the
   // helpers of ops/blender_export.h.
   virtual std::string BlenderCode() const = 0;
+  // How rebuild_blender.py realises the op (ops/blender_script.cc plans the script from this).
+  virtual BlenderStage Stage() const { return BlenderStage::kMeshEdit; }
+  // For a modifier: moving a global transform from before the op to after it builds the same
+  // mesh (`rigid`: the transform is a rotation or translation).
+  virtual bool CommutesWithTransform(bool /*rigid*/) const { return false; }
 
  protected:
   void AddParam(const std::string& name, double lower, double upper, double identity,

@@ -1,8 +1,6 @@
 #include "ops/sequence.h"
 
 #include "core/printable.h"
-#include "ops/face_selector.h"
-#include "ops/vertex_selector.h"
 
 #include <fstream>
 #include <sstream>
@@ -34,6 +32,7 @@ Sequence ParseSequence(const Json& document) {
       throw SequenceError(std::string("sequence: field '") + text + "': must be a string");
     }
   }
+  if (document.contains("name")) sequence.name = document["name"].get<std::string>();
   if (document.contains("version")) {
     const Json& v = document["version"];
     // Compared as JSON values: 4294967297 is not 1 (a conversion to int would wrap it).
@@ -100,10 +99,11 @@ Json SequenceToJson(const Sequence& sequence) {
     if (sequence.gates[i] != 1.0) entry["gate"] = sequence.gates[i];
     ops.push_back(entry);
   }
-  return {{"format", "opgraph-sequence"},
-          {"version", kSequenceFormatVersion},
-          {"start", {{"primitive", "cube"}, {"size", sequence.start_size}}},
-          {"operations", ops}};
+  Json document = {{"format", "opgraph-sequence"}, {"version", kSequenceFormatVersion}};
+  if (!sequence.name.empty()) document["name"] = sequence.name;
+  document["start"] = {{"primitive", "cube"}, {"size", sequence.start_size}};
+  document["operations"] = ops;
+  return document;
 }
 
 Mesh ApplyOp(Op* op, double gate, const Mesh& input) {
@@ -136,94 +136,6 @@ std::vector<Mesh> EvaluateSequence(Sequence* sequence) {
     steps.push_back(current);
   }
   return steps;
-}
-
-namespace {
-
-// Helpers shared by every op's Blender code.
-const char* kBlenderPreamble = R"PY(# Rebuilds an opgraph design sequence with Blender's own operators and modifiers.
-# Usage: blender -b --factory-startup --python-exit-code 1 -P rebuild_blender.py -- OUT.obj
-# Writes the evaluated mesh to OUT.obj in Blender's frame (+Z up, no axis conversion).
-import os
-import sys
-
-import bmesh
-import bpy
-from mathutils import Euler, Matrix, Vector
-
-
-def new_object(size):
-    for o in list(bpy.data.objects):
-        bpy.data.objects.remove(o, do_unlink=True)
-    me = bpy.data.meshes.new('opgraph')
-    bm = bmesh.new()
-    bmesh.ops.create_cube(bm, size=size)
-    bm.to_mesh(me)
-    bm.free()
-    obj = bpy.data.objects.new('opgraph', me)
-    bpy.context.scene.collection.objects.link(obj)
-    bpy.context.view_layer.objects.active = obj
-    return obj
-
-
-def edit_mesh(obj):
-    """Mesh data for a destructive edit: pending modifiers are applied first."""
-    if len(obj.modifiers):
-        dg = bpy.context.evaluated_depsgraph_get()
-        me = bpy.data.meshes.new_from_object(obj.evaluated_get(dg))
-        obj.modifiers.clear()
-        old = obj.data
-        obj.data = me
-        bpy.data.meshes.remove(old)
-    return obj.data
-
-
-def open_bmesh(obj):
-    """(mesh, bmesh) for a bmesh edit; pair with close_bmesh."""
-    me = edit_mesh(obj)
-    bm = bmesh.new()
-    bm.from_mesh(me)
-    return me, bm
-
-
-def close_bmesh(me, bm):
-    bm.to_mesh(me)
-    bm.free()
-    me.update()
-
-
-def export_obj(obj, path):
-    dg = bpy.context.evaluated_depsgraph_get()
-    me = obj.evaluated_get(dg).to_mesh()
-    lines = ['# opgraph rebuild_blender.py, Blender %s' % bpy.app.version_string]
-    lines += ['v %.9g %.9g %.9g' % tuple(v.co) for v in me.vertices]
-    lines += ['f ' + ' '.join(str(i + 1) for i in p.vertices) for p in me.polygons]
-    tmp = path + '.tmp'
-    with open(tmp, 'w') as f:
-        f.write('\n'.join(lines) + '\n')
-    os.replace(tmp, path)
-
-
-argv = sys.argv[sys.argv.index('--') + 1:] if '--' in sys.argv else []
-if len(argv) != 1:
-    sys.exit('usage: blender -b --factory-startup --python-exit-code 1 -P rebuild_blender.py -- OUT.obj')
-)PY";
-
-}  // namespace
-
-std::string BlenderScript(const Sequence& sequence) {
-  std::ostringstream script;
-  script << kBlenderPreamble << kVertexSelectorPython << "\nkMinFaceShape = " << Py(kMinFaceShape) << "\n" << kFaceSelectorPython << "\nobj = new_object(" << Py(sequence.start_size) << ")\n";
-  for (size_t i = 0; i < sequence.ops.size(); ++i) {
-    const Op& op = *sequence.ops[i];
-    script << "\n# " << i << ": " << op.Name() << "\n";
-    if (sequence.gates[i] != 1.0) {
-      throw SequenceError(OpLabel(i, op.Name()) + ": field 'gate': Blender export needs gate 1 (run the fitter's finalisation first)");
-    }
-    script << op.BlenderCode();
-  }
-  script << "\nexport_obj(obj, argv[0])\n";
-  return script.str();
 }
 
 }  // namespace opgraph

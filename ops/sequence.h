@@ -14,6 +14,7 @@ namespace opgraph {
 constexpr int kSequenceFormatVersion = 1;
 
 struct Sequence {
+  std::string name;  // optional: what it builds (the input's name); names the Blender object
   double start_size = 2.0;  // Blender's default cube
   std::vector<std::unique_ptr<Op>> ops;
   std::vector<double> gates;  // one per op, in [0, 1]
@@ -35,8 +36,5 @@ Mesh ApplyOp(Op* op, double gate, const Mesh& input);
 // (#ops entries). Throws SequenceError when a target does not exist at its step or the result
 // is not finite.
 std::vector<Mesh> EvaluateSequence(Sequence* sequence);
-
-// The Python script that rebuilds the sequence in Blender (contract: docs/sequence-format.md).
-std::string BlenderScript(const Sequence& sequence);
 
 }  // namespace opgraph

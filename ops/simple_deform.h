@@ -30,6 +30,7 @@ class SimpleDeformOp : public OpBase<SimpleDeformOp> {
   void Prepare(const Mesh& input) override { KeepTopology(input); }
   Json ParamsToJson() const override;
   std::string BlenderCode() const override;
+  BlenderStage Stage() const override { return BlenderStage::kModifier; }
 
   template <typename T>
   void Apply(const T* p, const T& gate, const Positions<T>& in, Positions<T>* out) const;

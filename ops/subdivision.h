@@ -24,6 +24,9 @@ class SubdivisionOp : public OpBase<SubdivisionOp> {
   void Prepare(const Mesh& input) override;
   Json ParamsToJson() const override;
   std::string BlenderCode() const override;
+  BlenderStage Stage() const override { return BlenderStage::kModifier; }
+  // Catmull-Clark refinement and its limit surface are affine invariant.
+  bool CommutesWithTransform(bool) const override { return true; }
 
   template <typename T>
   void Apply(const T* p, const T& gate, const Positions<T>& in, Positions<T>* out) const;

@@ -13,7 +13,7 @@ def select_verts(me, lo, hi, indices, expect):
                  if all((lo[k] is None or v.co[k] >= lo[k]) and (hi[k] is None or v.co[k] <= hi[k])
                         for k in range(3))]
     if not found or (expect >= 0 and len(found) != expect):
-        sys.exit('vertex selection found %d vertices, expected %d' % (len(found), expect))
+        raise RuntimeError('vertex selection found %d vertices, expected %d' % (len(found), expect))
     return found
 )PY";
 

@@ -1,5 +1,6 @@
 // The free-form finishing stage on targets with and without detail the cage lacks, and the kept
 // result replayed in real Blender.
+#include "ops/blender_script.h"
 #include "search/freeform.h"
 
 #include <gtest/gtest.h>

@@ -24,4 +24,21 @@ Mesh RunBlender(const std::string& script, const std::string& out_obj) {
   return ReadObj(out_obj);
 }
 
+std::vector<std::string> ExportedModifiers(const std::string& out_obj) {
+  std::ifstream in(out_obj);
+  std::vector<std::string> names;
+  const std::string prefix = "# modifier ";
+  for (std::string line; std::getline(in, line);) {
+    if (line.rfind(prefix, 0) != 0) continue;
+    std::string name = line.substr(prefix.size());
+    const size_t dot = name.rfind('.');
+    if (dot != std::string::npos && dot + 1 < name.size() &&
+        name.find_first_not_of("0123456789", dot + 1) == std::string::npos) {
+      name.resize(dot);
+    }
+    names.push_back(name);
+  }
+  return names;
+}
+
 }  // namespace opgraph

@@ -2,6 +2,7 @@
 #pragma once
 
 #include <string>
+#include <vector>
 
 #include "core/mesh.h"
 
@@ -13,5 +14,9 @@ std::string ShellQuote(const std::string& s);
 // Runs `script` with `-- out_obj`, its output to out_obj + ".log". Throws std::runtime_error
 // with the log when Blender fails.
 Mesh RunBlender(const std::string& script, const std::string& out_obj);
+
+// The modifiers the rebuilt object kept, from the "# modifier NAME" lines of the OBJ the script
+// exported, with Blender's ".001" suffixes removed.
+std::vector<std::string> ExportedModifiers(const std::string& out_obj);
 
 }  // namespace opgraph

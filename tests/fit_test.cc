@@ -12,6 +12,7 @@
 #include <memory>
 #include <random>
 
+#include "ops/blender_script.h"
 #include "core/metrics.h"
 #include "core/nearest.h"
 #include "solver/fitter.h"

@@ -10,12 +10,11 @@
 #include <set>
 #include <sstream>
 #include <sys/wait.h>
-#include <sstream>
-#include <sys/wait.h>
 
 #include "core/geometry.h"
 #include "core/obj_io.h"
 #include "core/surface_distance.h"
+#include "ops/blender_script.h"
 #include "ops/sequence.h"
 #include "tests/blender_runner.h"
 #include "tests/gt_convert.h"
@@ -157,6 +156,9 @@ TEST_P(ParityCase, BlenderRebuildMatches) {
   EXPECT_LT(distance, 1e-6);
   EXPECT_EQ(ours.NumVertices(), blender.NumVertices());
   EXPECT_EQ(ours.NumFaces(), blender.NumFaces());
+  // The modifiers that no mesh edit follows stay live on the rebuilt object, in order.
+  Sequence sequence = LoadSequence(ParityPath(GetParam()));
+  EXPECT_EQ(ExportedModifiers((dir / "blender.obj").string()), LiveModifierNames(sequence));
   fs::remove_all(dir);
 }
 

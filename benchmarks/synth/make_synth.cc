@@ -11,6 +11,7 @@
 #include <sstream>
 #include <thread>
 
+#include "ops/blender_script.h"
 #include "benchmarks/splits.h"
 #include "benchmarks/synth/synth_checks.h"
 #include "benchmarks/synth/synth_grammar.h"
