@@ -63,13 +63,15 @@ Sequence ParseSequence(const Json& document) {
     const std::string name = entry["op"].get<std::string>();
     try {
       for (auto it = entry.begin(); it != entry.end(); ++it) {
-        if (it.key() != "op" && it.key() != "params" && it.key() != "gate") {
+        if (it.key() != "op" && it.key() != "params" && it.key() != "gate" && it.key() != "pinned") {
           throw FieldError(Printable(it.key()), "unknown field");
         }
       }
       const Json params = entry.contains("params") ? entry["params"] : Json::object();
       sequence.ops.push_back(CreateOp(name, params));
       sequence.gates.push_back(entry.contains("gate") ? CheckedNumber(entry["gate"], "gate", 0, 1) : 1.0);
+      if (entry.contains("pinned") && !entry["pinned"].is_boolean()) throw FieldError("pinned", "must be true or false");
+      sequence.pinned.push_back(entry.value("pinned", false));
     } catch (const FieldError& e) {
       throw SequenceError(OpLabel(i, name) + ": field '" + e.field() + "': " + e.what());
     } catch (const std::invalid_argument& e) {
@@ -97,6 +99,7 @@ Json SequenceToJson(const Sequence& sequence) {
   for (size_t i = 0; i < sequence.ops.size(); ++i) {
     Json entry = {{"op", sequence.ops[i]->Name()}, {"params", sequence.ops[i]->ParamsToJson()}};
     if (sequence.gates[i] != 1.0) entry["gate"] = sequence.gates[i];
+    if (sequence.IsPinned(i)) entry["pinned"] = true;
     ops.push_back(entry);
   }
   Json document = {{"format", "opgraph-sequence"}, {"version", kSequenceFormatVersion}};

@@ -18,6 +18,11 @@ struct Sequence {
   double start_size = 2.0;  // Blender's default cube
   std::vector<std::unique_ptr<Op>> ops;
   std::vector<double> gates;  // one per op, in [0, 1]
+  // One per op (or none): a pinned op keeps its parameters and gate when the fitter refits the
+  // others (the editing workflow: fix one step by hand, let the rest adapt).
+  std::vector<bool> pinned;
+
+  bool IsPinned(size_t op) const { return op < pinned.size() && pinned[op]; }
 
   Mesh StartMesh() const { return MakeCube(start_size); }
 };

@@ -382,10 +382,15 @@ double Fitter::CurrentLoss() {
   return EvaluateObjective(*program_, objective, nullptr, &r, &j);
 }
 
+bool Fitter::Held(const ProgramBlock& block) const {
+  return static_cast<int>(block.constant.size()) == block.size || (block.is_gate ? hold_gates_ : hold_params_) ||
+         sequence_->IsPinned(static_cast<size_t>(block.op));
+}
+
 void Fitter::AddToProblem(const Objective& objective, ceres::Problem* problem) const {
   for (const ProgramBlock& block : program_->blocks()) {
     problem->AddParameterBlock(block.data, block.size);
-    if (static_cast<int>(block.constant.size()) == block.size || (block.is_gate ? hold_gates_ : hold_params_)) {
+    if (Held(block)) {
       problem->SetParameterBlockConstant(block.data);
     } else if (!block.constant.empty()) {
       problem->SetManifold(block.data, new ceres::SubsetManifold(block.size, block.constant));
@@ -469,8 +474,7 @@ double Fitter::Solve(const Correspondences& correspondences, double sparsity_wei
   std::vector<double> lower(n, -std::numeric_limits<double>::infinity()), upper(n, std::numeric_limits<double>::infinity());
   for (const ProgramBlock& block : blocks) {
     for (int i = 0; i < block.size; ++i) {
-      free[block.column + i] = std::count(block.constant.begin(), block.constant.end(), i) == 0 &&
-                               !(block.is_gate ? hold_gates_ : hold_params_);
+      free[block.column + i] = std::count(block.constant.begin(), block.constant.end(), i) == 0 && !Held(block);
       address[block.column + i] = block.data + i;
       if (block.holds_op_params()) {
         lower[block.column + i] = sequence_->ops[block.op]->specs()[i].lower;
@@ -632,12 +636,17 @@ bool Fitter::CommitBranches(FitSummary* summary) {
 }
 
 void Fitter::Finalise(FitSummary* summary) {
+  const std::vector<double> gates_as_given = sequence_->gates;
   program_->StoreGates();
+  // A pinned op keeps its gate exactly (the program holds a clamped logit for it).
+  for (size_t k = 0; k < sequence_->ops.size(); ++k) {
+    if (sequence_->IsPinned(k)) sequence_->gates[k] = gates_as_given[k];
+  }
   summary->gates_before_finalisation = sequence_->gates;
   std::vector<bool> prune(sequence_->ops.size(), false);
   for (size_t k = 0; k < sequence_->ops.size(); ++k) {
     Op& op = *sequence_->ops[k];
-    if (!program_->GateIsFree(static_cast<int>(k))) continue;
+    if (!program_->GateIsFree(static_cast<int>(k)) || sequence_->IsPinned(k)) continue;
     const double gate = sequence_->gates[k];
     prune[k] = gate < options_.prune_gate;
     // Fold the gate into the parameters: each op's gate blends p toward its identity value.

@@ -138,6 +138,9 @@ class Fitter {
  private:
   struct Correspondences;
   void AddToProblem(const Objective& objective, ceres::Problem* problem) const;
+  // Whether the solver holds `block` constant: fixed by the program, held in this stage, or
+  // belonging to a pinned op.
+  bool Held(const ProgramBlock& block) const;
   void BuildCorrespondences(uint64_t seed, Correspondences* out);
   // The residual blocks at fixed correspondences (the current stage's sparsity weight).
   void MakeObjective(const Correspondences& correspondences, Objective* objective) const;

@@ -360,3 +360,48 @@ TEST(Fit, AdamAndCeresSeeOneObjective) {
 
 }  // namespace
 }  // namespace opgraph
+
+namespace opgraph {
+namespace {
+
+// The editing workflow: an op marked "pinned" keeps its parameters (here deliberately off the
+// truth) while the others refit, and the loss still falls.
+TEST(Fit, PinnedOpKeepsItsParameters) {
+  const Json truth_json = Json::parse(kTwistedBox);
+  Sequence truth = ParseSequence(truth_json);
+  TargetOptions target_options;
+  target_options.num_samples = 5000;
+  const Target target(EvaluateSequence(&truth).back(), {}, target_options);
+  for (const bool fit_gates : {false, true}) {
+    Json edited = truth_json;
+    edited["operations"][0]["params"]["scale"] = {0.5, 0.9, 1.6};  // the artist's own proportions
+    edited["operations"][0]["pinned"] = true;
+    edited["operations"][2]["params"]["angle_deg"] = 30;  // left for the fit
+    Sequence sequence = ParseSequence(edited);
+    FitterOptions options = TestOptions();
+    options.fit_gates = fit_gates;
+    Fitter fitter(target, &sequence, options);
+    const FitSummary summary = fitter.Fit();
+    const Json fitted = SequenceToJson(sequence);
+    EXPECT_EQ(fitted["operations"][0]["params"], edited["operations"][0]["params"]) << "fit_gates " << fit_gates;
+    EXPECT_EQ(fitted["operations"][0]["pinned"], true);
+    // The twist moves toward the truth (70 degrees), and the loss falls.
+    EXPECT_GT(fitted["operations"][2]["params"]["angle_deg"].get<double>(), 50.0) << "fit_gates " << fit_gates;
+    EXPECT_LT(summary.final_loss, summary.initial_loss) << "fit_gates " << fit_gates;
+    for (double g : sequence.gates) EXPECT_EQ(g, 1.0);
+  }
+}
+
+TEST(Fit, PinnedMustBeABoolean) {
+  Json document = Json::parse(kTwistedBox);
+  document["operations"][1]["pinned"] = 1;
+  try {
+    ParseSequence(document);
+    FAIL() << "accepted pinned: 1";
+  } catch (const SequenceError& e) {
+    EXPECT_EQ(std::string(e.what()), "operation 1 (LoopCut): field 'pinned': must be true or false");
+  }
+}
+
+}  // namespace
+}  // namespace opgraph
