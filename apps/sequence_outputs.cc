@@ -4,6 +4,7 @@
 #include <filesystem>
 
 #include "core/obj_io.h"
+#include "io/write_glb.h"
 
 namespace opgraph {
 
@@ -24,6 +25,13 @@ SequenceOutputs RenderSequenceOutputs(Sequence* sequence, const BlenderScriptOpt
     }
   }
   outputs.blender_script = BlenderScript(*sequence, blender);
+  std::vector<std::string> node_names;
+  for (size_t i = 0; i < outputs.steps.size(); ++i) {
+    char name[64];
+    std::snprintf(name, sizeof(name), "%02zu_", i);
+    node_names.push_back(name + outputs.step_names[i]);
+  }
+  outputs.steps_glb = outputs.steps.empty() ? GlbBytes({outputs.result}, {"start"}) : GlbBytes(outputs.steps, node_names);
   outputs.sequence_json = SequenceToJson(*sequence).dump(1) + "\n";
   return outputs;
 }
@@ -41,6 +49,7 @@ void WriteSequenceOutputs(const SequenceOutputs& outputs, const std::string& out
     }
   }
   WriteObj(outputs.result, out_dir + "/result.obj", result_comment);
+  WriteFileAtomic(out_dir + "/result.glb", outputs.steps_glb);
   WriteFileAtomic(out_dir + "/rebuild_blender.py", outputs.blender_script);
   WriteFileAtomic(out_dir + "/sequence.json", outputs.sequence_json);
 }

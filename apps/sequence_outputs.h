@@ -18,12 +18,13 @@ struct SequenceOutputs {
   Mesh result;                         // the final mesh (the start cube for an empty sequence)
   std::string blender_script;          // rebuild_blender.py
   std::string sequence_json;           // sequence.json
+  std::string steps_glb;               // result.glb: one node per step (the start cube when none)
 };
 
 // Evaluates `sequence` and renders its outputs. Throws SequenceError (nothing is written).
 SequenceOutputs RenderSequenceOutputs(Sequence* sequence, const BlenderScriptOptions& blender = {});
 
-// Writes DIR/result.obj, DIR/rebuild_blender.py, DIR/sequence.json and, with `write_steps`,
+// Writes DIR/result.obj, DIR/result.glb, DIR/rebuild_blender.py, DIR/sequence.json and, with `write_steps`,
 // DIR/steps/NN_<op>.obj, creating DIR. Throws std::exception on an I/O failure.
 void WriteSequenceOutputs(const SequenceOutputs& outputs, const std::string& out_dir, bool write_steps,
                           const std::string& result_comment);
