@@ -96,8 +96,10 @@ def export_obj(obj, path, pose):
     os.replace(tmp, path)
 
 
-# Run from a scene there are no arguments: build the object and stop (never exit Blender).
+# Run from a scene there are no arguments: build the object and stop (never exit Blender). A
+# caller that runs this file itself (the add-on) sets OPGRAPH_ARGV.
 argv = sys.argv[sys.argv.index('--') + 1:] if '--' in sys.argv else []
+argv = globals().get('OPGRAPH_ARGV', argv)
 if len(argv) > 1:
     raise RuntimeError('usage: blender -b --factory-startup --python-exit-code 1 -P rebuild_blender.py -- OUT.obj')
 )PY";
