@@ -33,6 +33,7 @@
 #include <glog/logging.h>
 
 #include "apps/output_folder.h"
+#include "apps/report_html.h"
 #include "apps/search_progress_printer.h"
 #include "apps/sequence_outputs.h"
 #include "core/parallel_for.h"
@@ -189,9 +190,9 @@ int main(int argc, char** argv) {
     printer.Close();
     return fail(e.what());
   }
+  BlenderScriptOptions blender;
   try {
     sequence.name = std::filesystem::path(input_path).stem().string();
-    BlenderScriptOptions blender;
     blender.name = BlenderObjectName(sequence.name);
     if (blender_axes_import) blender.blender_from_sequence = BlenderImportFrame(input_path);
     outputs = RenderSequenceOutputs(&sequence, blender);
@@ -264,6 +265,10 @@ int main(int argc, char** argv) {
                          "opgraph fit_sequence result (the input's frame and units)");
     WriteFileAtomic(folder.staging_dir() + "/metrics.json", metrics.dump(1) + "\n");
     WriteFileAtomic(folder.staging_dir() + "/log.txt", log);
+    ReportInput report{sequence.name, outputs.steps, {}, Json::parse(outputs.sequence_json)["operations"],
+                       outputs.result, target->points(), metrics, blender.blender_from_sequence};
+    for (size_t i = 0; i < outputs.steps.size(); ++i) report.step_names.push_back(StepFileStem(i, outputs.step_names[i]));
+    WriteFileAtomic(folder.staging_dir() + "/report.html", ReportHtml(report));
     folder.Commit();
   } catch (const std::exception& e) {
     std::cerr << "fit_sequence: " << e.what() << "\n";

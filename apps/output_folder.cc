@@ -31,7 +31,7 @@ std::string CheckOutputFolder(const std::string& out_dir) {
   if (fs::is_directory(out, error)) {
     // Replacing the folder deletes what it holds: only an earlier run's files may be there.
     static const char* const kOurs[] = {"sequence.json", "result.obj",  "result.glb", "rebuild_blender.py",
-                                        "metrics.json",  "log.txt",     "blender.obj", "steps"};
+                                        "metrics.json",  "log.txt",     "blender.obj", "report.html", "steps"};
     for (const fs::directory_entry& entry : fs::directory_iterator(out, error)) {
       const std::string name = entry.path().filename().string();
       if (std::find(std::begin(kOurs), std::end(kOurs), name) == std::end(kOurs)) {

@@ -8,6 +8,12 @@
 
 namespace opgraph {
 
+std::string StepFileStem(size_t index, const std::string& op_name) {
+  char number[32];
+  std::snprintf(number, sizeof(number), "%02zu_", index);
+  return number + op_name;
+}
+
 SequenceOutputs RenderSequenceOutputs(Sequence* sequence, const BlenderScriptOptions& blender) {
   SequenceOutputs outputs;
   outputs.steps = EvaluateSequence(sequence);
@@ -26,11 +32,7 @@ SequenceOutputs RenderSequenceOutputs(Sequence* sequence, const BlenderScriptOpt
   }
   outputs.blender_script = BlenderScript(*sequence, blender);
   std::vector<std::string> node_names;
-  for (size_t i = 0; i < outputs.steps.size(); ++i) {
-    char name[64];
-    std::snprintf(name, sizeof(name), "%02zu_", i);
-    node_names.push_back(name + outputs.step_names[i]);
-  }
+  for (size_t i = 0; i < outputs.steps.size(); ++i) node_names.push_back(StepFileStem(i, outputs.step_names[i]));
   outputs.steps_glb = outputs.steps.empty() ? GlbBytes({outputs.result}, {"start"}) : GlbBytes(outputs.steps, node_names);
   outputs.sequence_json = SequenceToJson(*sequence).dump(1) + "\n";
   return outputs;
@@ -42,9 +44,7 @@ void WriteSequenceOutputs(const SequenceOutputs& outputs, const std::string& out
   if (write_steps) {
     std::filesystem::create_directories(std::filesystem::path(out_dir) / "steps");
     for (size_t i = 0; i < outputs.steps.size(); ++i) {
-      char name[64];
-      std::snprintf(name, sizeof(name), "%02zu_", i);
-      WriteObj(outputs.steps[i], out_dir + "/steps/" + name + outputs.step_names[i] + ".obj",
+      WriteObj(outputs.steps[i], out_dir + "/steps/" + StepFileStem(i, outputs.step_names[i]) + ".obj",
                "opgraph step " + std::to_string(i) + ": " + outputs.step_names[i]);
     }
   }

@@ -21,6 +21,9 @@ struct SequenceOutputs {
   std::string steps_glb;               // result.glb: one node per step (the start cube when none)
 };
 
+// "NN_<op>": the name of step `index` (its file under steps/, its node in result.glb).
+std::string StepFileStem(size_t index, const std::string& op_name);
+
 // Evaluates `sequence` and renders its outputs. Throws SequenceError (nothing is written).
 SequenceOutputs RenderSequenceOutputs(Sequence* sequence, const BlenderScriptOptions& blender = {});
 
