@@ -11,6 +11,13 @@ namespace opgraph {
 
 std::string ShellQuote(const std::string& s) { return "'" + s + "'"; }
 
+std::string ReadText(const std::string& path) {
+  std::ifstream in(path);
+  std::stringstream text;
+  text << in.rdbuf();
+  return text.str();
+}
+
 Mesh RunBlender(const std::string& script, const std::string& out_obj) {
   const std::string log = out_obj + ".log";
   const std::string command = "blender -b --factory-startup --python-exit-code 1 -P " + ShellQuote(script) + " -- " +

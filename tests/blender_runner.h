@@ -8,6 +8,9 @@
 
 namespace opgraph {
 
+// The whole text of a file (empty when it cannot be read).
+std::string ReadText(const std::string& path);
+
 // A single-quoted shell word (paths here never hold quotes).
 std::string ShellQuote(const std::string& s);
 

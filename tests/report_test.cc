@@ -9,18 +9,12 @@
 #include <sstream>
 
 #include "ops/params.h"
+#include "tests/blender_runner.h"
 
 namespace opgraph {
 namespace {
 
 namespace fs = std::filesystem;
-
-std::string ReadText(const fs::path& path) {
-  std::ifstream in(path);
-  std::stringstream text;
-  text << in.rdbuf();
-  return text.str();
-}
 
 // Appended by the test only (the page itself has no script): what the browser laid out.
 constexpr const char* kProbe = R"JS(<script>
@@ -54,8 +48,8 @@ TEST(Report, ChromiumShowsEveryStepCard) {
   const std::string dump = chromium + "--dump-dom 'file://" + (dir / "probed.html").string() + "' > '" +
                            (dir / "dom.html").string() + "' 2> '" + (dir / "console.log").string() + "'";
   ASSERT_EQ(std::system(dump.c_str()), 0) << dump;
-  EXPECT_EQ(ReadText(dir / "console.log").find("CONSOLE"), std::string::npos) << ReadText(dir / "console.log");
-  const std::string dom = ReadText(dir / "dom.html");
+  EXPECT_EQ(ReadText((dir / "console.log").string()).find("CONSOLE"), std::string::npos) << ReadText((dir / "console.log").string());
+  const std::string dom = ReadText((dir / "dom.html").string());
   const size_t start = dom.find("<title>probe ");
   ASSERT_NE(start, std::string::npos) << "the probe did not run";
   const size_t json_start = start + std::string("<title>probe ").size();

@@ -20,13 +20,6 @@ namespace {
 
 namespace fs = std::filesystem;
 
-std::string ReadText(const fs::path& path) {
-  std::ifstream in(path);
-  std::stringstream text;
-  text << in.rdbuf();
-  return text.str();
-}
-
 // Writes models `indices` of the default set (seed 1) into `out`.
 void MakeSynth(const std::string& indices, const fs::path& out, int threads, bool verify_blender = false) {
   const std::string command = std::string(OPGRAPH_MAKE_SYNTH) + " --out " + ShellQuote(out.string()) + " --indices " +
