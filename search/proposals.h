@@ -30,8 +30,8 @@ std::vector<Round> ProposeProfiles(const Layout& best);
 // groups of the profile with the most residual near them.
 std::vector<Round> ProposeLoopMoves(const Layout& best, const FaceResiduals& residuals);
 
-// Twist, taper (along the long axis) and bend (about the others), from both sides of the
-// identity, with rings along the long axis when there is no profile to bend smoothly.
+// Twist, taper and stretch (along the long axis) and bend (about the others), from both sides
+// of the identity, with rings along the long axis when there is no profile to bend smoothly.
 std::vector<Round> ProposeDeforms(const Layout& best);
 
 // A ridge or a peak (a gable roof): a loop cut across one axis, and the cut's vertices on one

@@ -194,7 +194,7 @@ TEST(Proposals, EveryStructuredFamilyEvaluates) {
   const Layout pose = PoseLayoutOnBox(Eigen::Matrix3d::Identity(), Vec3d(-1, -0.5, -2), Vec3d(1, 0.5, 2));
   EXPECT_EQ(ExpectAllEvaluate(pose, ProposeSmoothing(pose)), 1);
   EXPECT_EQ(ExpectAllEvaluate(pose, ProposeProfiles(pose)), 12);  // 6 profiles, each also subdivided
-  EXPECT_EQ(ExpectAllEvaluate(pose, ProposeDeforms(pose)), 10);   // along the long axis Z
+  EXPECT_EQ(ExpectAllEvaluate(pose, ProposeDeforms(pose)), 12);   // along the long axis Z
   EXPECT_EQ(ExpectAllEvaluate(pose, ProposeRidges(pose)), 12);    // axis pairs and sides
   EXPECT_EQ(ExpectAllEvaluate(pose, ProposeHoles(pose)), 9);
   EXPECT_EQ(ExpectAllEvaluate(pose, ProposeBevels(pose)), 1);  // the segment rounds need a bevel first

@@ -16,7 +16,8 @@ std::vector<Round> ProposeDeforms(const Layout& best) {
   // square section by a quarter turn from a small start).
   std::vector<Candidate> candidates = {{Deform::kTwist, axis, 30.0},  {Deform::kTwist, axis, -30.0},
                                        {Deform::kTwist, axis, 150.0}, {Deform::kTwist, axis, -150.0},
-                                       {Deform::kTaper, axis, 0.2},   {Deform::kTaper, axis, -0.2}};
+                                       {Deform::kTaper, axis, 0.2},   {Deform::kTaper, axis, -0.2},
+                                       {Deform::kStretch, axis, 0.2}, {Deform::kStretch, axis, -0.2}};
   for (int a = 0; a < 3; ++a) {
     if (a == axis) continue;
     candidates.push_back({Deform::kBend, a, 30.0});
