@@ -33,6 +33,7 @@ DEFINE_int32(cloud, 0,
              "> 0: give fit_sequence each model as a cloud of this many surface samples without normals "
              "(the issue's protocol: 20000), compare with the model mesh; records, page and outputs go to "
              "docs/results-cloud, docs/results-cloud.md and out/results-cloud unless given");
+DEFINE_bool(render_only, false, "only re-render the page from the records (no model is run)");
 DEFINE_string(commit, "", "the commit named in the records (default: git rev-parse --short HEAD)");
 
 namespace fs = std::filesystem;
@@ -82,6 +83,11 @@ int main(int argc, char** argv) {
   // A limited run never overwrites the full sets' records or page.
   if (FLAGS_limit > 0 && is_default("records")) FLAGS_records = FLAGS_cloud > 0 ? "out/results_limited-cloud" : "out/results_limited";
   if (FLAGS_limit > 0 && is_default("doc")) FLAGS_doc = FLAGS_records + "/results.md";
+  if (FLAGS_render_only) {
+    WriteFileAtomic(FLAGS_doc, ResultsMarkdown(LoadSetRecords(FLAGS_records), FLAGS_cloud));
+    std::cout << "[results] wrote " << FLAGS_doc << std::endl;
+    return 0;
+  }
   std::vector<ResultsModel> models;
   try {
     models = ListModels(FLAGS_set, FLAGS_data, FLAGS_synth);
