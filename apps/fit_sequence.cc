@@ -39,6 +39,7 @@
 #include "core/parallel_for.h"
 #include "core/metrics.h"
 #include "core/obj_io.h"
+#include "core/printable.h"
 #include "io/blender_import_frame.h"
 #include "solver/fitter.h"
 #include "search/zero_shot.h"
@@ -192,8 +193,9 @@ int main(int argc, char** argv) {
   }
   BlenderScriptOptions blender;
   try {
-    sequence.name = std::filesystem::path(input_path).stem().string();
-    blender.name = BlenderObjectName(sequence.name);
+    // The file's name in letters, digits and a few marks (a name that is not UTF-8 could not be
+    // written to sequence.json).
+    sequence.name = blender.name = BlenderObjectName(std::filesystem::path(input_path).stem().string());
     if (blender_axes_import) blender.blender_from_sequence = BlenderImportFrame(input_path);
     outputs = RenderSequenceOutputs(&sequence, blender);
   } catch (const std::exception& e) {
@@ -206,7 +208,7 @@ int main(int argc, char** argv) {
   const ShapeMetrics shape = ComputeShapeMetrics(outputs.result, target->shape(), metrics_options);
   const WiringMetrics wiring = ComputeWiringMetrics(outputs.result);
   Json metrics = {
-      {"target", input_path},
+      {"target", Printable(input_path, 4096)},  // JSON needs UTF-8: odd bytes show as ?
       {"optimizer", options.optimizer == Optimizer::kCeres ? "ceres" : "adam"},
       {"seed", options.seed},
       {"frame", {{"outputs", "the input's frame and units"},

@@ -209,3 +209,26 @@ TEST(FitSequence, BadInputFailsWithOneLineAndWritesNothing) {
 
 }  // namespace
 }  // namespace opgraph
+
+namespace opgraph {
+namespace {
+
+// A file name that is not UTF-8 (bytes a filesystem allows) still gives every output: JSON
+// needs UTF-8, so the name is written with the odd byte replaced.
+TEST(FitSequence, FileNameThatIsNotUtf8) {
+  const fs::path dir = fs::temp_directory_path() / "opgraph_odd_name";
+  fs::remove_all(dir);
+  fs::create_directories(dir);
+  const fs::path input = dir / "bar\xffrel.obj";
+  fs::copy_file(fs::path(OPGRAPH_SOURCE_DIR) / "examples" / "barrel.obj", input);
+  EXPECT_EQ(RunCommand(std::string(OPGRAPH_FIT_SEQUENCE) + " --input " + Quote(input.string()) + " --out " +
+                       Quote((dir / "out").string()) + " --work-budget 500 --quiet > /dev/null"),
+            0);
+  const Json sequence = Json::parse(std::ifstream(dir / "out" / "sequence.json"));
+  EXPECT_EQ(sequence["name"], "bar_rel");
+  EXPECT_TRUE(fs::exists(dir / "out" / "report.html"));
+  fs::remove_all(dir);
+}
+
+}  // namespace
+}  // namespace opgraph
