@@ -5,6 +5,7 @@
 #include "io/ply_header.h"
 
 #include <assimp/DefaultLogger.hpp>
+#include <memory>
 #include <assimp/Importer.hpp>
 #include <assimp/LogStream.hpp>
 #include <assimp/postprocess.h>
@@ -81,15 +82,22 @@ class AssimpErrorCollector : public Assimp::LogStream {
 };
 
 InputGeometry ReadWithAssimp(const std::string& path) {
-  // Assimp's logger is global.
+  // Assimp's logger is global: a host program's own logger is borrowed (our stream attached, then
+  // detached), else one is made for the call and removed after it.
   static std::mutex logger_mutex;
   const std::lock_guard<std::mutex> lock(logger_mutex);
-  Assimp::DefaultLogger::create(nullptr, Assimp::Logger::NORMAL, 0);
-  auto* errors = new AssimpErrorCollector;  // the logger owns and deletes its streams
-  Assimp::DefaultLogger::get()->attachStream(errors, Assimp::Logger::Err);
-  struct KillLogger {
-    ~KillLogger() { Assimp::DefaultLogger::kill(); }
-  } kill_logger;
+  const bool own_logger = Assimp::DefaultLogger::isNullLogger();
+  if (own_logger) Assimp::DefaultLogger::create(nullptr, Assimp::Logger::NORMAL, 0);
+  auto errors = std::make_unique<AssimpErrorCollector>();
+  Assimp::DefaultLogger::get()->attachStream(errors.get(), Assimp::Logger::Err);
+  struct RestoreLogger {
+    AssimpErrorCollector* stream;
+    bool own;
+    ~RestoreLogger() {
+      Assimp::DefaultLogger::get()->detachStream(stream, Assimp::Logger::Err);  // ownership returns to us
+      if (own) Assimp::DefaultLogger::kill();
+    }
+  } restore_logger{errors.get(), own_logger};
   Assimp::Importer importer;
   // Points and lines are kept (a PLY without faces is a point cloud, which Assimp's own
   // validation step would reject; CheckGeometry validates instead); node transforms are baked so
@@ -216,7 +224,12 @@ void CheckGeometry(const std::string& path, InputGeometry* input) {
 }  // namespace
 
 InputGeometry ReadInput(const std::string& path) {
-  // PCL warns on stderr about absent optional fields (normals); errors are ours to report.
+  // PCL warns on stderr about absent optional fields (normals); errors are ours to report. The
+  // host program's level is restored on return.
+  struct RestoreVerbosity {
+    pcl::console::VERBOSITY_LEVEL level = pcl::console::getVerbosityLevel();
+    ~RestoreVerbosity() { pcl::console::setVerbosityLevel(level); }
+  } restore_verbosity;
   pcl::console::setVerbosityLevel(pcl::console::L_ALWAYS);
   std::error_code error;
   if (!fs::is_regular_file(path, error)) Fail(path, "cannot open file (missing or not a file)");

@@ -24,6 +24,10 @@ struct InputGeometry {
 // (`x y z [nx ny nz]` per line; also .pts/.txt), and PLY files without faces.
 // Throws std::runtime_error with a one-line message naming the problem (missing, empty or
 // corrupt file, unsupported format, non-finite coordinates, zero extent).
+// Global state: a host program's PCL verbosity and Assimp DefaultLogger are as they were after
+// the call (test: ReadInput.LeavesTheHostsLoggingAsItWas). Calls on several threads are safe
+// (Assimp reads are serialised on its global logger); while one runs, PCL's process-wide
+// verbosity is lowered, so a host's own PCL messages on another thread may be silenced then.
 InputGeometry ReadInput(const std::string& path);
 
 // Estimates unit normals of a point cloud from its `k` nearest neighbours (PCL), oriented away

@@ -9,6 +9,8 @@
 #include <fstream>
 #include <random>
 
+#include <assimp/DefaultLogger.hpp>
+#include <pcl/console/print.h>
 #include <pcl/io/pcd_io.h>
 #include <pcl/point_types.h>
 
@@ -95,6 +97,30 @@ TEST(ReadInput, PointCloudsKeepPointsAndNormals) {
     ASSERT_EQ(cloud.mesh.NumVertices(), 4) << name;
     EXPECT_EQ(cloud.mesh.vertices[3], Vec3d(0, 0, 1)) << name;
   }
+}
+
+// Reading leaves the host program's global logging as it was: PCL's verbosity, and an Assimp
+// logger the host made (still there, and still its own, after a read and after a failed read).
+TEST(ReadInput, LeavesTheHostsLoggingAsItWas) {
+  const fs::path dir = TestDir("host_logging");
+  WriteText(dir / "tri.obj", "v 0 0 0\nv 1 0 0\nv 0 1 0\nv 0 0 1\nf 1 2 3\nf 1 3 4\nf 1 4 2\nf 2 4 3\n");
+  WriteText(dir / "broken.off", "OFF\n3 1 0\n0 0 0\n1 0 0\n0 1 0\n3 0 1 7\n");
+  WriteText(dir / "points.pcd",
+            "# .PCD v0.7\nVERSION 0.7\nFIELDS x y z\nSIZE 4 4 4\nTYPE F F F\nCOUNT 1 1 1\nWIDTH 4\nHEIGHT 1\n"
+            "VIEWPOINT 0 0 0 1 0 0 0\nPOINTS 4\nDATA ascii\n0 0 0\n1 0 0\n0 1 0\n0 0 1\n");
+  pcl::console::setVerbosityLevel(pcl::console::L_DEBUG);
+  Assimp::Logger* host = Assimp::DefaultLogger::create(nullptr, Assimp::Logger::VERBOSE, 0);
+  EXPECT_NO_THROW(ReadInput((dir / "tri.obj").string()));
+  EXPECT_NO_THROW(ReadInput((dir / "points.pcd").string()));
+  EXPECT_THROW(ReadInput((dir / "broken.off").string()), std::runtime_error);  // our error stream still works
+  EXPECT_EQ(pcl::console::getVerbosityLevel(), pcl::console::L_DEBUG);
+  EXPECT_FALSE(Assimp::DefaultLogger::isNullLogger());
+  EXPECT_EQ(Assimp::DefaultLogger::get(), host);
+  Assimp::DefaultLogger::kill();
+  pcl::console::setVerbosityLevel(pcl::console::L_INFO);
+  // Without a host logger, none is left behind.
+  EXPECT_NO_THROW(ReadInput((dir / "tri.obj").string()));
+  EXPECT_TRUE(Assimp::DefaultLogger::isNullLogger());
 }
 
 // PCD files as PCL writes them (binary and compressed, with normals) pass the header check.
