@@ -81,6 +81,28 @@ class AssimpErrorCollector : public Assimp::LogStream {
   std::string first_error_;
 };
 
+// Lowers PCL's process-wide verbosity while any read runs; the first read in saves the host's
+// level and the last one out restores it (so overlapping reads on two threads restore it too).
+class QuietPcl {
+ public:
+  QuietPcl() {
+    const std::lock_guard<std::mutex> lock(mutex_);
+    if (readers_++ == 0) {
+      saved_ = pcl::console::getVerbosityLevel();
+      pcl::console::setVerbosityLevel(pcl::console::L_ALWAYS);
+    }
+  }
+  ~QuietPcl() {
+    const std::lock_guard<std::mutex> lock(mutex_);
+    if (--readers_ == 0) pcl::console::setVerbosityLevel(saved_);
+  }
+
+ private:
+  static inline std::mutex mutex_;
+  static inline int readers_ = 0;
+  static inline pcl::console::VERBOSITY_LEVEL saved_ = pcl::console::L_INFO;
+};
+
 InputGeometry ReadWithAssimp(const std::string& path) {
   // Assimp's logger is global: a host program's own logger is borrowed (our stream attached, then
   // detached), else one is made for the call and removed after it.
@@ -226,11 +248,7 @@ void CheckGeometry(const std::string& path, InputGeometry* input) {
 InputGeometry ReadInput(const std::string& path) {
   // PCL warns on stderr about absent optional fields (normals); errors are ours to report. The
   // host program's level is restored on return.
-  struct RestoreVerbosity {
-    pcl::console::VERBOSITY_LEVEL level = pcl::console::getVerbosityLevel();
-    ~RestoreVerbosity() { pcl::console::setVerbosityLevel(level); }
-  } restore_verbosity;
-  pcl::console::setVerbosityLevel(pcl::console::L_ALWAYS);
+  const QuietPcl quiet_pcl;
   std::error_code error;
   if (!fs::is_regular_file(path, error)) Fail(path, "cannot open file (missing or not a file)");
   if (fs::file_size(path, error) == 0) Fail(path, "file is empty");
