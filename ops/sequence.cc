@@ -87,7 +87,7 @@ Sequence LoadSequence(const std::string& path) {
   Json document;
   try {
     document = Json::parse(in);
-  } catch (const Json::parse_error& e) {
+  } catch (const Json::exception& e) {  // a syntax error, or a number beyond double (1e400)
     std::string what = e.what();
     throw SequenceError(path + ": invalid JSON: " + what.substr(what.find(']') + 2));
   }

@@ -21,7 +21,8 @@ int ParamIndex(const Json& op, const std::string& name) {
 
 }  // namespace
 
-FitterOptions WithDomainRules(FitterOptions options, const Json& document, double min_half_extent) {
+FitterOptions WithDomainRules(FitterOptions options, const Json& document, const Vec3d& half_extent) {
+  const double min_half_extent = half_extent.minCoeff();
   constexpr double kMaxTilt = kPi / 4;
   constexpr double kInf = std::numeric_limits<double>::infinity();
   const Json& ops = document.at("operations");
@@ -31,6 +32,14 @@ FitterOptions WithDomainRules(FitterOptions options, const Json& document, doubl
         options.domain_rules.push_back({k, ParamIndex(ops[k], tilt), -kMaxTilt, kMaxTilt, 1.0});
       }
       options.domain_rules.push_back({k, ParamIndex(ops[k], "width"), 0.1, 10.0, 1.0});
+    }
+    // A flat target (a sheet: its box under 1% as thick as it is long) would squash the cube to
+    // nothing, an edge Blender's float32 coordinates cannot keep. Only there: any other target's
+    // fits stay exactly as they were.
+    if (ops[k].at("op") == "GlobalAffineScale" && half_extent.minCoeff() < 0.01 * half_extent.maxCoeff()) {
+      for (const char* axis : {"scale_x", "scale_y", "scale_z"}) {
+        options.domain_rules.push_back({k, ParamIndex(ops[k], axis), 1e-3 * half_extent.maxCoeff(), kInf, 1.0});
+      }
     }
     if (ops[k].at("op") == "Inset") {
       options.domain_rules.push_back({k, ParamIndex(ops[k], "thickness"), 0.01 * min_half_extent, kInf, 1.0});

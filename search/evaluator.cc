@@ -45,9 +45,9 @@ Evaluator::Evaluator(const Target& target, const ZeroShotOptions& options)
   final_options_.max_inner_iterations = 30;
 }
 
-FitterOptions Evaluator::FitOptions(FitPrecision precision, const Json& document, double min_half_extent) const {
+FitterOptions Evaluator::FitOptions(FitPrecision precision, const Json& document, const Vec3d& half_extent) const {
   return WithDomainRules(precision == FitPrecision::kSearch ? search_options_ : final_options_, document,
-                         min_half_extent);
+                         half_extent);
 }
 
 // Runs on a worker thread: touches no member that changes during a batch.
@@ -60,7 +60,7 @@ Evaluator::Outcome Evaluator::FitUncached(const Layout& layout, FitPrecision pre
     Sequence sequence = ParseSequence(document);
     outcome.fitted = true;
     const FitSummary summary =
-        FitSequence(target_, &sequence, FitOptions(precision, document, layout.half_extent.minCoeff()));
+        FitSequence(target_, &sequence, FitOptions(precision, document, layout.half_extent));
     outcome.work = Work(summary);
     outcome.seconds = summary.seconds;
     outcome.trial.layout = layout.WithParameters(SequenceToJson(sequence));
@@ -147,8 +147,8 @@ std::vector<Trial> Evaluator::FitAll(const std::vector<Layout>& layouts, FitPrec
   return trials;
 }
 
-FitSummary Evaluator::FitGates(Sequence* sequence, const Json& document, double min_half_extent) {
-  FitterOptions options = FitOptions(FitPrecision::kFinal, document, min_half_extent);
+FitSummary Evaluator::FitGates(Sequence* sequence, const Json& document, const Vec3d& half_extent) {
+  FitterOptions options = FitOptions(FitPrecision::kFinal, document, half_extent);
   options.fit_gates = true;
   const FitSummary summary = FitSequence(target_, sequence, options);
   ++num_fits_;

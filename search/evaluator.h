@@ -40,9 +40,9 @@ class Evaluator {
   bool NeedsFit(const Layout& layout) const;
   // The finishing gate fit of `sequence` (parsed from `document`): op gates fitted with the
   // sparsity stage, ops below the threshold pruned. Throws the fitter's errors.
-  FitSummary FitGates(Sequence* sequence, const Json& document, double min_half_extent);
+  FitSummary FitGates(Sequence* sequence, const Json& document, const Vec3d& half_extent);
   // The fitter options of `precision`, with the domain rules of `document`.
-  FitterOptions FitOptions(FitPrecision precision, const Json& document, double min_half_extent) const;
+  FitterOptions FitOptions(FitPrecision precision, const Json& document, const Vec3d& half_extent) const;
 
   // Proposals stop at this share of the budget; the finishing fits (gate pruning, polishing,
   // simplification: 20-40 s on a 20-op sequence) take the rest.

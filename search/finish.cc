@@ -77,13 +77,12 @@ Json ScaleFirstIfSame(const Json& document, double diagonal) {
 // The searched sequence with its op gates fitted and the ops below the threshold pruned, or,
 // when pruning does not pay, polished with more samples; `loss` is set to its loss.
 Json PruneOrPolish(Evaluator* evaluator, const Trial& best, double* loss) {
-  const double min_half_extent = best.layout.half_extent.minCoeff();
   *loss = best.loss;
   const Json searched = best.layout.Document();
   Json document = searched;
   try {
     Sequence sequence = ParseSequence(searched);
-    const FitSummary summary = evaluator->FitGates(&sequence, searched, min_half_extent);
+    const FitSummary summary = evaluator->FitGates(&sequence, searched, best.layout.half_extent);
     Json fitted = SequenceToJson(sequence);
     Sequence replay = ParseSequence(fitted);
     const bool breaks_replay = BreaksReplay(fitted, EvaluateSequence(&replay));

@@ -232,3 +232,24 @@ TEST(FitSequence, FileNameThatIsNotUtf8) {
 
 }  // namespace
 }  // namespace opgraph
+
+namespace opgraph {
+namespace {
+
+// A flat sheet (one quad, zero thickness) is a fine input: the box keeps a sliver of thickness
+// instead of collapsing to edges Blender could not rebuild.
+TEST(FitSequence, AFlatSheetIsAFineInput) {
+  const fs::path dir = fs::temp_directory_path() / "opgraph_flat_sheet";
+  fs::remove_all(dir);
+  fs::create_directories(dir);
+  std::ofstream(dir / "sheet.obj") << "v 0 0 0\nv 2 0 0\nv 2 1 0\nv 0 1 0\nf 1 2 3 4\n";
+  EXPECT_EQ(RunCommand(std::string(OPGRAPH_FIT_SEQUENCE) + " --input " + Quote((dir / "sheet.obj").string()) +
+                       " --out " + Quote((dir / "out").string()) + " --work-budget 3000 --quiet > /dev/null"),
+            0);
+  const Json metrics = Json::parse(std::ifstream(dir / "out" / "metrics.json"));
+  EXPECT_LT(metrics["shape"]["chamfer"]["sum"].get<double>(), 0.005);
+  fs::remove_all(dir);
+}
+
+}  // namespace
+}  // namespace opgraph

@@ -315,7 +315,7 @@ INSTANTIATE_TEST_SUITE_P(
                                     {"op": "GlobalAffineScale", "params": {"scale": [1, 0, 1]}}]})",
                  "operation 1 (GlobalAffineScale): field 'scale[1]': must not be zero"},
         BadInput{"infinite", R"({"operations": [{"op": "GlobalAffineTranslate", "params": {"offset": [1e999, 0, 0]}}]})",
-                 "number overflow"},
+                 "seq.json: invalid JSON: number overflow"},
         BadInput{"wrong_type", R"({"operations": [{"op": "GlobalAffineRotate", "params": {"rotation_deg": "import os"}}]})",
                  "operation 0 (GlobalAffineRotate): field 'rotation_deg': must be an array of 3 numbers"},
         BadInput{"unknown_param", R"({"operations": [{"op": "GlobalAffineTranslate", "params": {"offset": [0, 0, 0], "code": "x"}}]})",
