@@ -213,39 +213,39 @@ TEST(FitSequence, BadInputFailsWithOneLineAndWritesNothing) {
 namespace opgraph {
 namespace {
 
+// A fresh folder `name` under the temporary directory.
+fs::path FreshDir(const std::string& name) {
+  const fs::path dir = fs::temp_directory_path() / name;
+  fs::remove_all(dir);
+  fs::create_directories(dir);
+  return dir;
+}
+
+// Zero-shot fit_sequence on `input` into `out` at a small budget; its exit code.
+int QuickFit(const fs::path& input, const fs::path& out, int work_budget) {
+  return RunCommand(std::string(OPGRAPH_FIT_SEQUENCE) + " --input " + Quote(input.string()) + " --out " +
+                    Quote(out.string()) + " --work-budget " + std::to_string(work_budget) + " --quiet > /dev/null");
+}
+
 // A file name that is not UTF-8 (bytes a filesystem allows) still gives every output: JSON
 // needs UTF-8, so the name is written with the odd byte replaced.
 TEST(FitSequence, FileNameThatIsNotUtf8) {
-  const fs::path dir = fs::temp_directory_path() / "opgraph_odd_name";
-  fs::remove_all(dir);
-  fs::create_directories(dir);
+  const fs::path dir = FreshDir("opgraph_odd_name");
   const fs::path input = dir / "bar\xffrel.obj";
   fs::copy_file(fs::path(OPGRAPH_SOURCE_DIR) / "examples" / "barrel.obj", input);
-  EXPECT_EQ(RunCommand(std::string(OPGRAPH_FIT_SEQUENCE) + " --input " + Quote(input.string()) + " --out " +
-                       Quote((dir / "out").string()) + " --work-budget 500 --quiet > /dev/null"),
-            0);
+  EXPECT_EQ(QuickFit(input, dir / "out", 500), 0);
   const Json sequence = Json::parse(std::ifstream(dir / "out" / "sequence.json"));
   EXPECT_EQ(sequence["name"], "bar_rel");
   EXPECT_TRUE(fs::exists(dir / "out" / "report.html"));
   fs::remove_all(dir);
 }
 
-}  // namespace
-}  // namespace opgraph
-
-namespace opgraph {
-namespace {
-
 // A flat sheet (one quad, zero thickness) is a fine input: the box keeps a sliver of thickness
 // instead of collapsing to edges Blender could not rebuild.
 TEST(FitSequence, AFlatSheetIsAFineInput) {
-  const fs::path dir = fs::temp_directory_path() / "opgraph_flat_sheet";
-  fs::remove_all(dir);
-  fs::create_directories(dir);
+  const fs::path dir = FreshDir("opgraph_flat_sheet");
   std::ofstream(dir / "sheet.obj") << "v 0 0 0\nv 2 0 0\nv 2 1 0\nv 0 1 0\nf 1 2 3 4\n";
-  EXPECT_EQ(RunCommand(std::string(OPGRAPH_FIT_SEQUENCE) + " --input " + Quote((dir / "sheet.obj").string()) +
-                       " --out " + Quote((dir / "out").string()) + " --work-budget 3000 --quiet > /dev/null"),
-            0);
+  EXPECT_EQ(QuickFit(dir / "sheet.obj", dir / "out", 3000), 0);
   const Json metrics = Json::parse(std::ifstream(dir / "out" / "metrics.json"));
   EXPECT_LT(metrics["shape"]["chamfer"]["sum"].get<double>(), 0.005);
   fs::remove_all(dir);
