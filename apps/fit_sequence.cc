@@ -267,9 +267,9 @@ int main(int argc, char** argv) {
                          "opgraph fit_sequence result (the input's frame and units)");
     WriteFileAtomic(folder.staging_dir() + "/metrics.json", metrics.dump(1) + "\n");
     WriteFileAtomic(folder.staging_dir() + "/log.txt", log);
-    ReportInput report{sequence.name, outputs.steps, {}, Json::parse(outputs.sequence_json)["operations"],
-                       outputs.result, target->points(), metrics, blender.blender_from_sequence};
-    for (size_t i = 0; i < outputs.steps.size(); ++i) report.step_names.push_back(StepFileStem(i, outputs.step_names[i]));
+    const ReportInput report{sequence.name, outputs.steps, StepFileStems(outputs.step_names),
+                             SequenceToJson(sequence)["operations"], outputs.result, target->points(), metrics,
+                             blender.blender_from_sequence};
     WriteFileAtomic(folder.staging_dir() + "/report.html", ReportHtml(report));
     folder.Commit();
   } catch (const std::exception& e) {

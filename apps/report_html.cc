@@ -35,7 +35,7 @@ struct View {
     double lo[2] = {1e300, 1e300}, hi[2] = {-1e300, -1e300};
     for (const Positions<double>* points : extent) {
       for (const Vec3d& p : *points) {
-        const double s[2] = {Screen(p).x(), Screen(p).y()};
+        const Vec3d s = Screen(p);
         for (int k = 0; k < 2; ++k) lo[k] = std::min(lo[k], s[k]), hi[k] = std::max(hi[k], s[k]);
       }
     }
@@ -162,7 +162,7 @@ std::string ReportHtml(const ReportInput& input) {
        << MetricRow(input.metrics, "ended by", Json::json_pointer("/fit/ended_by")) << "</table>\n";
   html << "<div class=\"cards\"><div class=\"card\" id=\"result\"><h3>result</h3>"
        << Svg(ShadedMesh(view, input.result)) << "</div><div class=\"card\" id=\"target\"><h3>target</h3>"
-       << Svg(GhostPoints(view, input.target_points)) << "</div></div>\n<h2>Steps</h2>\n<div class=\"cards\">\n";
+       << Svg(ghost) << "</div></div>\n<h2>Steps</h2>\n<div class=\"cards\">\n";
   for (size_t i = 0; i < input.steps.size(); ++i) {
     const std::string params =
         i < input.operations.size() && input.operations[i].contains("params") ? input.operations[i]["params"].dump(1) : "{}";

@@ -14,6 +14,12 @@ std::string StepFileStem(size_t index, const std::string& op_name) {
   return number + op_name;
 }
 
+std::vector<std::string> StepFileStems(const std::vector<std::string>& op_names) {
+  std::vector<std::string> stems;
+  for (size_t i = 0; i < op_names.size(); ++i) stems.push_back(StepFileStem(i, op_names[i]));
+  return stems;
+}
+
 SequenceOutputs RenderSequenceOutputs(Sequence* sequence, const BlenderScriptOptions& blender) {
   SequenceOutputs outputs;
   outputs.steps = EvaluateSequence(sequence);
@@ -31,9 +37,8 @@ SequenceOutputs RenderSequenceOutputs(Sequence* sequence, const BlenderScriptOpt
     }
   }
   outputs.blender_script = BlenderScript(*sequence, blender);
-  std::vector<std::string> node_names;
-  for (size_t i = 0; i < outputs.steps.size(); ++i) node_names.push_back(StepFileStem(i, outputs.step_names[i]));
-  outputs.steps_glb = outputs.steps.empty() ? GlbBytes({outputs.result}, {"start"}) : GlbBytes(outputs.steps, node_names);
+  outputs.steps_glb = outputs.steps.empty() ? GlbBytes({outputs.result}, {"start"})
+                                             : GlbBytes(outputs.steps, StepFileStems(outputs.step_names));
   outputs.sequence_json = SequenceToJson(*sequence).dump(1) + "\n";
   return outputs;
 }

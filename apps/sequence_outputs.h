@@ -23,6 +23,8 @@ struct SequenceOutputs {
 
 // "NN_<op>": the name of step `index` (its file under steps/, its node in result.glb).
 std::string StepFileStem(size_t index, const std::string& op_name);
+// StepFileStem of every entry of `op_names`, in order.
+std::vector<std::string> StepFileStems(const std::vector<std::string>& op_names);
 
 // Evaluates `sequence` and renders its outputs. Throws SequenceError (nothing is written).
 SequenceOutputs RenderSequenceOutputs(Sequence* sequence, const BlenderScriptOptions& blender = {});
