@@ -1,59 +1,37 @@
-// apply_sequence SEQ.json --out DIR [--max-ops N]
+// apply_sequence SEQ.json --out DIR [--max-ops N]; `apply_sequence --help` lists the flags.
 // Evaluates a design sequence and writes DIR/result.obj, DIR/steps/NN_<op>.obj and
 // DIR/rebuild_blender.py, replacing an earlier run's DIR whole (apps/output_folder.h). Bad input
-// (an --out that is a file or a folder of other files among it): one line on stderr naming the
-// problem, exit code 2, and nothing written.
+// (a bad command line or sequence, an --out that is a file or a folder of other files among
+// it): one line on stderr naming the problem, exit code 2, and nothing written.
+#include <gflags/gflags.h>
+
 #include <filesystem>
 #include <iostream>
 #include <stdexcept>
 #include <string>
 
+#include "apps/cli_flags.h"
 #include "apps/output_folder.h"
 #include "apps/sequence_outputs.h"
 
-namespace {
-
-constexpr const char* kUsage = "usage: apply_sequence SEQ.json --out DIR [--max-ops N]";
-
-// One step file is written per op: a sequence longer than this is refused (--max-ops).
-constexpr long long kDefaultMaxOps = 1000;
-
-}  // namespace
+DEFINE_string(out, "", "the output folder (required), written whole or not at all; it replaces an earlier run's folder");
+DEFINE_int64(max_ops, 1000,
+             "the longest sequence taken, in [1, 9999999]: one step file is written per operation, and a longer "
+             "sequence is refused");
 
 int main(int argc, char** argv) {
   using namespace opgraph;
-  std::string sequence_path, out_dir;
-  long long max_ops = kDefaultMaxOps;
-  for (int i = 1; i < argc; ++i) {
-    const std::string arg = argv[i];
-    if (arg == "--out" && i + 1 < argc) {
-      out_dir = argv[++i];
-    } else if (arg == "--max-ops" && i + 1 < argc) {
-      const std::string value = argv[++i];
-      if (value.empty() || value.size() > 7 || value.find_first_not_of("0123456789") != std::string::npos ||
-          std::stoll(value) < 1) {
-        std::cerr << "apply_sequence: --max-ops: expected an integer in [1, 9999999]\n";
-        return 2;
-      }
-      max_ops = std::stoll(value);
-    } else if (arg == "-h" || arg == "--help") {
-      std::cout << kUsage << "\n";
-      return 0;
-    } else if (sequence_path.empty() && arg.rfind("--", 0) != 0) {
-      sequence_path = arg;
-    } else {
-      std::cerr << "apply_sequence: unexpected argument '" << arg << "'; " << kUsage << "\n";
-      return 2;
-    }
+  constexpr const char* kUsage = "usage: apply_sequence SEQ.json --out DIR [--max-ops N]";
+  const std::vector<std::string> arguments =
+      ParseCommandLineOrExit(argc, argv, {"apply_sequence", kUsage, __FILE__, /*max_arguments=*/1});
+  if (arguments.empty() || FLAGS_out.empty()) return BadInput("apply_sequence", std::string(kUsage) + " (see --help)");
+  if (FLAGS_max_ops < 1 || FLAGS_max_ops > 9999999) {
+    return BadInput("apply_sequence", "--max-ops: expected an integer in [1, 9999999]");
   }
-  if (sequence_path.empty() || out_dir.empty()) {
-    std::cerr << "apply_sequence: " << kUsage << "\n";
-    return 2;
-  }
-  if (const std::string problem = CheckOutputFolder(out_dir); !problem.empty()) {
-    std::cerr << "apply_sequence: " << problem << "\n";
-    return 2;
-  }
+  const std::string& sequence_path = arguments[0];
+  const std::string& out_dir = FLAGS_out;
+  const long long max_ops = FLAGS_max_ops;
+  if (const std::string problem = CheckOutputFolder(out_dir); !problem.empty()) return BadInput("apply_sequence", problem);
 
   // Everything is computed before anything is written, so a bad sequence leaves no files.
   SequenceOutputs outputs;
@@ -68,8 +46,7 @@ int main(int argc, char** argv) {
                                                            : sequence.name);
     outputs = RenderSequenceOutputs(&sequence, blender);
   } catch (const std::exception& e) {
-    std::cerr << "apply_sequence: " << e.what() << "\n";
-    return 2;
+    return BadInput("apply_sequence", e.what());
   }
 
   try {

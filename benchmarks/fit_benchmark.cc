@@ -5,6 +5,7 @@
 // Prints Markdown (docs/benchmarks.md holds a copy).
 //
 // usage: fit_benchmark [GT_DEV_DIR]   (default: ../shared/data/gt-dev beside the source tree)
+#include <algorithm>
 #include <chrono>
 #include <cstdio>
 #include <filesystem>
@@ -15,6 +16,7 @@
 #include <ceres/manifold.h>
 #include <ceres/problem.h>
 
+#include "apps/cli_flags.h"
 #include "core/nearest.h"
 #include "residuals/correspondence_cost.h"
 #include "solver/fitter.h"
@@ -177,15 +179,18 @@ void JacobianThroughput() {
 }  // namespace opgraph
 
 int main(int argc, char** argv) {
+  const std::vector<std::string> arguments = opgraph::ParseCommandLineOrExit(
+      argc, argv,
+      {"fit_benchmark", "usage: fit_benchmark [GT_DEV_DIR]   (default: ../shared/data/gt-dev beside the source tree)",
+       /*flags_file=*/"", /*max_arguments=*/1});
   const std::filesystem::path root =
-      argc > 1 ? std::filesystem::path(argv[1])
-               : std::filesystem::path(OPGRAPH_SOURCE_DIR) / ".." / "shared" / "data" / "gt-dev";
+      !arguments.empty() ? std::filesystem::path(arguments[0])
+                         : std::filesystem::path(OPGRAPH_SOURCE_DIR) / ".." / "shared" / "data" / "gt-dev";
   try {
     opgraph::CompareOptimizers(root);
     opgraph::JacobianThroughput();
   } catch (const std::exception& e) {
-    std::cerr << "fit_benchmark: " << e.what() << "\n";
-    return 2;
+    return opgraph::BadInput("fit_benchmark", e.what());
   }
   return 0;
 }

@@ -12,6 +12,7 @@
 #include <mutex>
 #include <thread>
 
+#include "apps/cli_flags.h"
 #include "benchmarks/results_doc.h"
 #include "core/obj_io.h"
 #include "search/zero_shot.h"
@@ -62,12 +63,9 @@ std::string Today() {
 }  // namespace
 
 int main(int argc, char** argv) {
-  gflags::SetUsageMessage("run_results [--set NAME] [--work_budget N] [--time_budget S] [--jobs N] (see --help)");
-  gflags::ParseCommandLineFlags(&argc, &argv, true);
-  if (argc > 1) {
-    std::cerr << "run_results: unexpected argument '" << std::string(argv[1]).substr(0, 80) << "'\n";
-    return 2;
-  }
+  ParseCommandLineOrExit(argc, argv,
+                         {"run_results", "usage: run_results [--set NAME] [--work_budget N] [--time_budget S] [--jobs N]",
+                          __FILE__, /*max_arguments=*/0});
   if (FLAGS_work_budget < 0 || FLAGS_time_budget < 0 || FLAGS_threads < 0 || FLAGS_jobs < 0 || FLAGS_limit < 0) {
     std::cerr << "run_results: --work_budget, --time_budget, --threads, --jobs and --limit must be >= 0\n";
     return 2;

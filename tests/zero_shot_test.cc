@@ -4,7 +4,6 @@
 #include "search/zero_shot.h"
 
 #include <gtest/gtest.h>
-#include <sys/wait.h>
 
 #include <cstdlib>
 #include <filesystem>
@@ -15,6 +14,7 @@
 #include "core/obj_io.h"
 #include "ops/blender_script.h"
 #include "ops/sequence.h"
+#include "tests/run_command.h"
 
 namespace opgraph {
 namespace {
@@ -22,11 +22,6 @@ namespace {
 namespace fs = std::filesystem;
 
 std::string Quote(const std::string& s) { return "'" + s + "'"; }
-
-int RunCommand(const std::string& command) {
-  const int status = std::system(command.c_str());
-  return WIFEXITED(status) ? WEXITSTATUS(status) : -1;
-}
 
 Mesh BuildMesh(const std::string& sequence_json) {
   Sequence sequence = ParseSequence(Json::parse(sequence_json));

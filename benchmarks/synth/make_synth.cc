@@ -11,6 +11,7 @@
 #include <sstream>
 #include <thread>
 
+#include "apps/cli_flags.h"
 #include "ops/blender_script.h"
 #include "benchmarks/splits.h"
 #include "benchmarks/synth/synth_checks.h"
@@ -102,12 +103,10 @@ void VerifyInBlender(const fs::path& dir, int threads, std::vector<synth::SynthM
 }  // namespace
 
 int main(int argc, char** argv) {
-  gflags::SetUsageMessage("make_synth --out DIR [--seed N] [--count N | --indices I,J,...]");
-  gflags::ParseCommandLineFlags(&argc, &argv, true);
-  if (FLAGS_out.empty() || argc > 1 || FLAGS_count < 1) {
-    std::cerr << "make_synth: " << (argc > 1 ? std::string("unexpected argument '") + argv[1] + "'" : "--out and --count >= 1 are required") << "\n";
-    return 2;
-  }
+  ParseCommandLineOrExit(argc, argv,
+                         {"make_synth", "usage: make_synth --out DIR [--seed N] [--count N | --indices I,J,...]",
+                          __FILE__, /*max_arguments=*/0});
+  if (FLAGS_out.empty() || FLAGS_count < 1) return BadInput("make_synth", "--out and --count >= 1 are required");
   std::vector<int> indices;
   try {
     indices = Indices();
