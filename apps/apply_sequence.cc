@@ -9,7 +9,7 @@
 #include <string>
 
 #include "apps/output_folder.h"
-#include "apps/sequence_outputs.h"
+#include "io/sequence_outputs.h"
 
 namespace {
 

@@ -35,12 +35,12 @@
 #include "apps/output_folder.h"
 #include "apps/report_html.h"
 #include "apps/search_progress_printer.h"
-#include "apps/sequence_outputs.h"
 #include "core/parallel_for.h"
 #include "core/metrics.h"
 #include "core/obj_io.h"
 #include "core/printable.h"
 #include "io/blender_import_frame.h"
+#include "io/sequence_outputs.h"
 #include "solver/fitter.h"
 #include "search/zero_shot.h"
 
