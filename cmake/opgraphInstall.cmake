@@ -1,6 +1,6 @@
 # cmake --install: the libraries, their headers under include/opgraph/ (the source tree's folders
 # below it, so "core/mesh.h" resolves as in the sources) and the CMake package opgraph
-# (opgraphConfig.cmake.in).
+# (opgraphConfig.cmake.in). Test: InstallAndConsume (tests/install_consumer_test.sh).
 include(GNUInstallDirs)
 include(CMakePackageConfigHelpers)
 
