@@ -12,7 +12,7 @@
 
 #include "apps/cli_flags.h"
 #include "apps/output_folder.h"
-#include "apps/sequence_outputs.h"
+#include "io/sequence_outputs.h"
 
 DEFINE_string(out, "", "the output folder (required), written whole or not at all; it replaces an earlier run's folder");
 DEFINE_int64(max_ops, 1000,

@@ -24,11 +24,11 @@
 #include "apps/output_folder.h"
 #include "apps/report_html.h"
 #include "apps/search_progress_printer.h"
-#include "apps/sequence_outputs.h"
 #include "core/metrics.h"
 #include "core/obj_io.h"
 #include "core/printable.h"
 #include "io/blender_import_frame.h"
+#include "io/sequence_outputs.h"
 #include "solver/fitter.h"
 #include "search/zero_shot.h"
 

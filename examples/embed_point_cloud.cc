@@ -8,8 +8,8 @@
 #include <iostream>
 #include <random>
 
-#include "apps/sequence_outputs.h"
 #include "io/pcl_cloud.h"
+#include "io/sequence_outputs.h"
 #include "solver/target.h"
 #include "search/zero_shot.h"
 

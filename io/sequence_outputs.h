@@ -1,5 +1,6 @@
-// The files a sequence run produces (shared by apply_sequence and fit_sequence): everything is
-// computed first, so bad input leaves nothing written, then each file is written atomically.
+// The files a sequence run produces (apply_sequence's, fit_sequence's, and any program's that
+// links opgraph::io): everything is computed first, so bad input leaves nothing written, then
+// each file is written atomically.
 #pragma once
 
 #include <string>

@@ -1,4 +1,4 @@
-#include "apps/sequence_outputs.h"
+#include "io/sequence_outputs.h"
 
 #include <cstdio>
 #include <filesystem>
