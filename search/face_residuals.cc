@@ -14,11 +14,8 @@ FaceResiduals ComputeFaceResiduals(const Target& target, const Layout& layout) {
   const std::vector<Mesh> steps = EvaluateSequence(&sequence);
   FaceResiduals r;
   r.cage = steps[layout.CageStep()];
-  const Json& rotation = layout.rotate["params"]["rotation_deg"];
-  const Json& offset = layout.translate["params"]["offset"];
-  const Eigen::Matrix3d world_from_local =
-      EulerXYZToMatrix(DegToRad(rotation[0]), DegToRad(rotation[1]), DegToRad(rotation[2]));
-  const Vec3d translation(offset[0], offset[1], offset[2]);
+  const Eigen::Matrix3d world_from_local = layout.PoseRotation();
+  const Vec3d translation = layout.PoseTranslation();
   const int num_faces = r.cage.NumFaces();
   r.centroids.resize(num_faces), r.normals.resize(num_faces), r.areas.resize(num_faces);
   for (int f = 0; f < num_faces; ++f) {

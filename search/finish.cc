@@ -35,10 +35,13 @@ Json Simplify(Evaluator* evaluator, Json document) {
     const std::string name = candidate["operations"][k]["op"];
     candidate["operations"].erase(static_cast<size_t>(k));
     const double without = chamfer(candidate);
-    if (without <= current * 1.02 + 1e-7) {
-      std::ostringstream line;
-      line << "simplify: removed op " << k << " (" << name << "): Chamfer " << current << " -> " << without;
-      evaluator->Note(line.str());
+    const bool remove = without <= current * 1.02 + 1e-7;
+    // Kept ops are logged too, so a price can be studied from the logs (benchmarks/).
+    std::ostringstream line;
+    line << "simplify: " << (remove ? "removed" : "kept") << " op " << k << " (" << name << "): Chamfer " << current
+         << " -> " << without;
+    evaluator->Note(line.str());
+    if (remove) {
       document = candidate;
       current = without;
     }

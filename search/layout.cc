@@ -26,7 +26,10 @@ void PinFlatLoopScales(std::vector<Json>* part) {
 
 }  // namespace
 
-int Layout::NumOps() const { return CageStep() + 3 + (mirror_axes.empty() ? 0 : 2) + (subdivide ? 1 : 0); }
+int Layout::NumOps() const {
+  return CageStep() + 1 + (rotate.is_null() ? 0 : 1) + (translate.is_null() ? 0 : 1) + (mirror_axes.empty() ? 0 : 2) +
+         (subdivide ? 1 : 0);
+}
 
 int Layout::CageStep() const {
   return static_cast<int>(profile.size() + grid.size() + ridge.size() + deforms.size() + details.size());
@@ -46,6 +49,19 @@ Vec3d Layout::LocalToCage(Vec3d local) const {
   return local - Vec3d(offset[0], offset[1], offset[2]);
 }
 
+Eigen::Matrix3d Layout::PoseRotation() const {
+  if (rotate.is_null()) return Eigen::Matrix3d::Identity();
+  const Json& degrees = rotate["params"]["rotation_deg"];
+  return EulerXYZToMatrix(DegToRad(degrees[0].get<double>()), DegToRad(degrees[1].get<double>()),
+                          DegToRad(degrees[2].get<double>()));
+}
+
+Vec3d Layout::PoseTranslation() const {
+  if (translate.is_null()) return Vec3d::Zero();
+  const Json& offset = translate["params"]["offset"];
+  return Vec3d(offset[0], offset[1], offset[2]);
+}
+
 Json Layout::Document() const {
   std::vector<Json> ops;
   for (const std::vector<Json>* part : {&profile, &grid}) ops.insert(ops.end(), part->begin(), part->end());
@@ -58,8 +74,8 @@ Json Layout::Document() const {
     ops.push_back(build::Mirror(axes));
   }
   if (subdivide) ops.push_back(build::Subdivision(2));
-  ops.push_back(rotate);
-  ops.push_back(translate);
+  if (!rotate.is_null()) ops.push_back(rotate);
+  if (!translate.is_null()) ops.push_back(translate);
   return build::Document(ops);
 }
 
@@ -77,8 +93,8 @@ Layout Layout::WithParameters(const Json& fitted) const {
   }
   if (!mirror_axes.empty()) out.mirror_offset = ops[i], i += 2;
   if (subdivide) ++i;
-  out.rotate = ops[i++];
-  out.translate = ops[i++];
+  if (!rotate.is_null()) out.rotate = ops[i++];
+  if (!translate.is_null()) out.translate = ops[i++];
   return out;
 }
 

@@ -20,6 +20,8 @@ struct Layout {
   std::vector<Json> profile;  // on the 2x2x2 cube: loop cuts along the long axis, loop scales
   std::string profile_name;   // which profile proposal `profile` is, empty when none
   std::vector<Json> grid;     // then: loop cuts across the other axes, loop scales
+  // `rotate` and `translate` are null when the pose has none (the search may drop a Rotate or
+  // Translate that does not pay for itself: search/propose_pose.cc).
   Json scale, rotate, translate;
   std::vector<Json> ridge;    // after the scale: a loop cut with its top vertices raised
   std::vector<Json> deforms;
@@ -42,6 +44,9 @@ struct Layout {
   // `local` (a point in the frame of the pose's Rotate and Translate) in the cage's frame: for a
   // mirrored pair, folded onto the built part and moved back by the offset.
   Vec3d LocalToCage(Vec3d local) const;
+  // The pose's Rotate and Translate (identity where dropped): world = rotation * local + translation.
+  Eigen::Matrix3d PoseRotation() const;
+  Vec3d PoseTranslation() const;
   Json Document() const;
   // This layout with the parameters of `fitted` (a fit of Document()).
   Layout WithParameters(const Json& fitted) const;

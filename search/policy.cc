@@ -47,7 +47,7 @@ void PrefetchAhead(Evaluator* evaluator, const Layout& best, const std::vector<R
 }  // namespace
 
 Trial ConsiderRound(Evaluator* evaluator, const std::string& stage, const Trial& best, const Round& round) {
-  if (!evaluator->InBudget()) return best;
+  if (!evaluator->InBudget() && (!round.finishing || evaluator->search_end() == SearchEnd::kCancelled)) return best;
   std::vector<Layout> layouts;
   std::vector<std::string> whats;
   Alternatives(best.layout, round, &layouts, &whats);

@@ -19,6 +19,9 @@ using Edit = std::function<std::string(Layout*)>;
 struct Round {
   std::vector<Edit> alternatives;
   double gain_per_op = 0;  // the price per added op, when larger than min_relative_gain
+  // Fitted also when the search's share of the budget is spent (not when cancelled): a
+  // finishing step, paid from the finishing share.
+  bool finishing = false;
 };
 
 // The factor a loss must fall by to pay for `added` ops (below 1; above 1 when ops are

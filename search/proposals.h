@@ -61,6 +61,11 @@ std::vector<Round> ProposeBooleans(const Layout& best, const std::vector<Residua
 // opposite edge midpoints with the new vertices raised (a ridge on a facet); none after a Bevel.
 std::vector<Round> ProposeFacets(const Layout& best, const FaceResiduals& residuals);
 
+// The sequence without its Rotate, its Translate, or both, refitted: a cage that the search
+// tilted by a few degrees or moved a little to fit a shape it does not explain yet is simpler
+// without them when the rest of the sequence can take their place.
+std::vector<Round> ProposePoseDrops(const Layout& best);
+
 // Loop-cut grids across two axes: faces where extrusions can start (legs at a table's corners).
 // Each is judged with the extrusions it enables, so these are layouts to expand, not rounds.
 struct Expansion {

@@ -10,8 +10,11 @@ std::vector<Round> ProposeFacets(const Layout& best, const FaceResiduals& residu
   std::vector<Round> rounds;
   if (best.HasDetail("Bevel")) return rounds;  // a modeller bevels last
   // A faceted waist or bulge: a bisecting knife across each axis through the cage's middle, its
-  // new loop scaled.
+  // new loop scaled. Priced as a special-purpose structure: a scaled loop also bends the cage
+  // toward shapes it does not explain (in a tuning run it was accepted on 9 of 60 synthetic
+  // models, none of which had a KnifeCut; a loop cut's profile is the modeller's waist).
   Round waist;
+  waist.gain_per_op = kStructureGainPerOp;
   for (int axis = 0; axis < 3; ++axis) {
     const Vec3d normal = Vec3d::Unit(axis);
     build::VertexTarget loop;

@@ -20,7 +20,8 @@ std::vector<Round> ProposeProfiles(const Layout& best) {
     std::vector<std::vector<int>> groups;  // empty: one scale per loop
     std::string name;
   };
-  const std::vector<Profile> profiles = {{2, {{0, 1}}, "x2, the two loops scaled together"},
+  const std::vector<Profile> profiles = {{1, {}, "x1, its loop scaled"},
+                                         {2, {{0, 1}}, "x2, the two loops scaled together"},
                                          {4, {{1, 2}}, "x4, the inner two loops scaled together"},
                                          {2, {}, "x2, each loop scaled"},
                                          {4, {{0}, {1, 2}, {3}}, "x4, ends and middle scaled"},

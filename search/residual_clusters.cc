@@ -85,11 +85,8 @@ std::vector<ResidualCluster> FindResidualClusters(const Target& target, const La
   Sequence sequence = ParseSequence(layout.Document());
   const std::vector<Mesh> steps = EvaluateSequence(&sequence);
   const Mesh& cage = steps[layout.CageStep()];
-  const Json& rotation = layout.rotate["params"]["rotation_deg"];
-  const Json& offset = layout.translate["params"]["offset"];
-  const Eigen::Matrix3d world_from_local =
-      EulerXYZToMatrix(DegToRad(rotation[0]), DegToRad(rotation[1]), DegToRad(rotation[2]));
-  const Vec3d translation(offset[0], offset[1], offset[2]);
+  const Eigen::Matrix3d world_from_local = layout.PoseRotation();
+  const Vec3d translation = layout.PoseTranslation();
   const double diagonal = 2.0 * layout.half_extent.norm();
   const double threshold = 0.03 * diagonal;
   const std::vector<MeshTriangle> triangles = FanTriangulate(cage.faces);

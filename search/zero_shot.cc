@@ -36,6 +36,8 @@ class StagedSearch {
       for (const Stage stage : passes) best = (this->*stage)(best);
       if (!(best.loss < before)) break;
     }
+    // Last, once the structure has taken what it explains.
+    best = ConsiderRounds(&evaluator_, "pose", best, ProposePoseDrops(best.layout));
     return Finish(&evaluator_, best);
   }
 
