@@ -1,0 +1,168 @@
+#include "ops/halfedge_topology.h"
+
+#include <OpenMesh/Core/System/omstream.hh>
+
+#include <algorithm>
+#include <mutex>
+
+namespace opgraph {
+
+namespace {
+
+// OpenMesh reports each refused face on stderr; a refused face is expected here (it is added
+// on vertex copies), so its reports are switched off once.
+void SilenceOpenMesh() {
+  static std::once_flag once;
+  std::call_once(once, [] { omerr().disable(); });
+}
+
+bool RepeatsAVertex(const Polygon& face) {
+  for (size_t i = 0; i < face.size(); ++i) {
+    for (size_t j = i + 1; j < face.size(); ++j) {
+      if (face[i] == face[j]) return true;
+    }
+  }
+  return false;
+}
+
+}  // namespace
+
+HalfedgeTopology::HalfedgeTopology(const std::vector<Polygon>& faces, int num_vertices)
+    : num_vertices_(num_vertices) {
+  SilenceOpenMesh();
+  size_t num_corners = 0;
+  for (const Polygon& face : faces) num_corners += face.size();
+  mesh_.reserve(num_vertices, num_corners / 2 + 1, faces.size());
+  for (int v = 0; v < num_vertices; ++v) mesh_.add_vertex();
+  std::vector<VertexHandle> handles;
+  for (const Polygon& face : faces) AddFace(face, &handles);
+  NumberCornersAndEdges(faces);
+}
+
+// Adds `face` as face mesh_.n_faces(): on its own vertices if OpenMesh takes it, else on copies.
+void HalfedgeTopology::AddFace(const Polygon& face, std::vector<VertexHandle>* handles) {
+  handles->clear();
+  for (int v : face) handles->push_back(VertexHandle(v));
+  if (!RepeatsAVertex(face) && mesh_.add_face(*handles).is_valid()) return;
+  if (copies_.empty()) copies_.resize(num_vertices_);
+  for (size_t i = 0; i < face.size(); ++i) {
+    (*handles)[i] = mesh_.add_vertex();
+    copies_[face[i]].push_back((*handles)[i].idx());
+    copy_of_.push_back(face[i]);
+  }
+  mesh_.add_face(*handles);
+}
+
+// Corners from each face's halfedges (OpenMesh's face halfedge runs from the last vertex to the
+// first), and edge numbers: OpenMesh's edge order, copies of one edge sharing its number.
+void HalfedgeTopology::NumberCornersAndEdges(const std::vector<Polygon>& faces) {
+  face_offset_.assign(1, 0);
+  corner_halfedge_.clear();
+  halfedge_corner_.assign(mesh_.n_halfedges(), {-1, -1});
+  for (int f = 0; f < static_cast<int>(faces.size()); ++f) {
+    HalfedgeHandle h = mesh_.next_halfedge_handle(mesh_.halfedge_handle(OpenMesh::FaceHandle(f)));
+    for (int c = 0; c < static_cast<int>(faces[f].size()); ++c, h = mesh_.next_halfedge_handle(h)) {
+      corner_halfedge_.push_back(h.idx());
+      halfedge_corner_[h.idx()] = {f, c};
+    }
+    face_offset_.push_back(static_cast<int>(corner_halfedge_.size()));
+  }
+  const int num_openmesh_edges = static_cast<int>(mesh_.n_edges());
+  edge_of_openmesh_edge_.resize(num_openmesh_edges);
+  edge_vertices_.clear();
+  for (int e = 0; e < num_openmesh_edges; ++e) {
+    const HalfedgeHandle h = mesh_.halfedge_handle(OpenMesh::EdgeHandle(e), 0);
+    const int a = Original(mesh_.from_vertex_handle(h)), b = Original(mesh_.to_vertex_handle(h));
+    int earliest = e;  // the first OpenMesh edge joining a and b
+    if (!Manifold()) {
+      ForEachOutgoing(a, [&](HalfedgeHandle g) {
+        if (Original(mesh_.to_vertex_handle(g)) == b) earliest = std::min(earliest, mesh_.edge_handle(g).idx());
+      });
+    }
+    if (earliest < e) {
+      edge_of_openmesh_edge_[e] = edge_of_openmesh_edge_[earliest];
+    } else {
+      edge_of_openmesh_edge_[e] = static_cast<int>(edge_vertices_.size());
+      edge_vertices_.push_back({a, b});
+    }
+  }
+  num_edges_ = static_cast<int>(edge_vertices_.size());
+  corner_edge_.resize(corner_halfedge_.size());
+  for (size_t k = 0; k < corner_halfedge_.size(); ++k) {
+    corner_edge_[k] = edge_of_openmesh_edge_[mesh_.edge_handle(HalfedgeHandle(corner_halfedge_[k])).idx()];
+  }
+}
+
+int HalfedgeTopology::Original(VertexHandle vertex) const {
+  return vertex.idx() < num_vertices_ ? vertex.idx() : copy_of_[vertex.idx() - num_vertices_];
+}
+
+template <typename Visit>
+void HalfedgeTopology::ForEachOutgoing(int v, Visit visit) const {
+  for (auto it = mesh_.cvoh_iter(VertexHandle(v)); it.is_valid(); ++it) visit(*it);
+  if (Manifold()) return;
+  for (int copy : copies_[v]) {
+    for (auto it = mesh_.cvoh_iter(VertexHandle(copy)); it.is_valid(); ++it) visit(*it);
+  }
+}
+
+int HalfedgeTopology::Edge(int a, int b) const {
+  if (Manifold()) {
+    const HalfedgeHandle h = mesh_.find_halfedge(VertexHandle(a), VertexHandle(b));
+    return h.is_valid() ? edge_of_openmesh_edge_[mesh_.edge_handle(h).idx()] : -1;
+  }
+  int edge = -1;
+  ForEachOutgoing(a, [&](HalfedgeHandle h) {
+    if (Original(mesh_.to_vertex_handle(h)) == b) edge = edge_of_openmesh_edge_[mesh_.edge_handle(h).idx()];
+  });
+  return edge;
+}
+
+int HalfedgeTopology::CornerVertex(const Corner& corner) const {
+  const HalfedgeHandle h(corner_halfedge_[face_offset_[corner.face] + corner.corner]);
+  return Original(mesh_.from_vertex_handle(h));
+}
+
+std::vector<HalfedgeTopology::Corner> HalfedgeTopology::EdgeCorners(int e) const {
+  std::vector<Corner> corners;
+  auto add = [&](HalfedgeHandle h) {
+    if (halfedge_corner_[h.idx()].face >= 0) corners.push_back(halfedge_corner_[h.idx()]);
+  };
+  const auto [a, b] = edge_vertices_[e];
+  // Each OpenMesh edge joining (copies of) a and b is met once as a halfedge a -> b.
+  ForEachOutgoing(a, [&](HalfedgeHandle h) {
+    if (Original(mesh_.to_vertex_handle(h)) != b) return;
+    add(h);
+    if (a != b) add(mesh_.opposite_halfedge_handle(h));
+  });
+  std::sort(corners.begin(), corners.end());
+  return corners;
+}
+
+std::vector<HalfedgeTopology::Corner> HalfedgeTopology::VertexCorners(int v) const {
+  std::vector<Corner> corners;
+  ForEachOutgoing(v, [&](HalfedgeHandle h) {
+    if (halfedge_corner_[h.idx()].face >= 0) corners.push_back(halfedge_corner_[h.idx()]);
+  });
+  std::sort(corners.begin(), corners.end());
+  return corners;
+}
+
+std::vector<HalfedgeTopology::Corner> HalfedgeTopology::RegionBoundary(const std::vector<int>& region) const {
+  std::vector<bool> in_region(NumFaces(), false);
+  for (int f : region) in_region[f] = true;
+  std::vector<Corner> boundary;
+  for (int f : region) {
+    for (int c = 0; c < face_offset_[f + 1] - face_offset_[f]; ++c) {
+      const int from = CornerVertex({f, c});
+      bool reversed = false;  // run b -> a by a face of the region
+      for (const Corner& other : EdgeCorners(CornerEdge(f, c))) {
+        reversed = reversed || (in_region[other.face] && CornerVertex(other) != from);
+      }
+      if (!reversed) boundary.push_back({f, c});
+    }
+  }
+  return boundary;
+}
+
+}  // namespace opgraph
