@@ -3,6 +3,7 @@
 #include <OpenMesh/Core/System/omstream.hh>
 
 #include <algorithm>
+#include <deque>
 #include <mutex>
 
 namespace opgraph {
@@ -25,7 +26,42 @@ bool RepeatsAVertex(const Polygon& face) {
   return false;
 }
 
+// FNV-1a over the vertex count and the face loops.
+size_t HashFaces(const std::vector<Polygon>& faces, int num_vertices) {
+  size_t hash = 14695981039346656037ull ^ static_cast<size_t>(num_vertices);
+  for (const Polygon& face : faces) {
+    for (int v : face) hash = (hash ^ static_cast<size_t>(v)) * 1099511628211ull;
+    hash = (hash ^ 0xffffffffull) * 1099511628211ull;  // face end
+  }
+  return hash;
+}
+
 }  // namespace
+
+std::shared_ptr<const HalfedgeTopology> HalfedgeTopology::Of(const Mesh& mesh) {
+  struct Entry {
+    size_t hash;
+    int num_vertices;
+    std::vector<Polygon> faces;
+    std::shared_ptr<const HalfedgeTopology> topology;
+  };
+  static std::mutex mutex;
+  static std::deque<Entry> cache;  // most recent first
+  const size_t hash = HashFaces(mesh.faces, mesh.NumVertices());
+  {
+    std::lock_guard<std::mutex> lock(mutex);
+    for (const Entry& entry : cache) {
+      if (entry.hash == hash && entry.num_vertices == mesh.NumVertices() && entry.faces == mesh.faces) {
+        return entry.topology;
+      }
+    }
+  }
+  auto topology = std::make_shared<const HalfedgeTopology>(mesh.faces, mesh.NumVertices());
+  std::lock_guard<std::mutex> lock(mutex);
+  cache.push_front({hash, mesh.NumVertices(), mesh.faces, topology});
+  if (cache.size() > kCached) cache.pop_back();
+  return topology;
+}
 
 HalfedgeTopology::HalfedgeTopology(const std::vector<Polygon>& faces, int num_vertices)
     : num_vertices_(num_vertices) {
@@ -149,15 +185,17 @@ std::vector<HalfedgeTopology::Corner> HalfedgeTopology::VertexCorners(int v) con
 }
 
 std::vector<HalfedgeTopology::Corner> HalfedgeTopology::RegionBoundary(const std::vector<int>& region) const {
-  std::vector<bool> in_region(NumFaces(), false);
-  for (int f : region) in_region[f] = true;
+  // Sorted, not a mask over all faces: Extrude "individual" asks once per face.
+  std::vector<int> sorted = region;
+  std::sort(sorted.begin(), sorted.end());
+  auto in_region = [&](int f) { return std::binary_search(sorted.begin(), sorted.end(), f); };
   std::vector<Corner> boundary;
   for (int f : region) {
     for (int c = 0; c < face_offset_[f + 1] - face_offset_[f]; ++c) {
       const int from = CornerVertex({f, c});
       bool reversed = false;  // run b -> a by a face of the region
       for (const Corner& other : EdgeCorners(CornerEdge(f, c))) {
-        reversed = reversed || (in_region[other.face] && CornerVertex(other) != from);
+        reversed = reversed || (in_region(other.face) && CornerVertex(other) != from);
       }
       if (!reversed) boundary.push_back({f, c});
     }

@@ -15,6 +15,7 @@
 
 #include <OpenMesh/Core/Mesh/PolyConnectivity.hh>
 
+#include <memory>
 #include <utility>
 #include <vector>
 
@@ -32,6 +33,11 @@ class HalfedgeTopology {
 
   // `faces` index vertices 0 .. num_vertices - 1 (#F loops of at least 3).
   HalfedgeTopology(const std::vector<Polygon>& faces, int num_vertices);
+  // The half-edge mesh of `mesh`'s faces, built once per distinct face list: a search prepares
+  // many ops (every choice it tries) on one mesh, and building costs more than most topology
+  // passes. The last kCached face lists are kept (thread-safe).
+  static std::shared_ptr<const HalfedgeTopology> Of(const Mesh& mesh);
+  static constexpr int kCached = 4;
 
   int NumFaces() const { return static_cast<int>(face_offset_.size()) - 1; }
   int NumEdges() const { return num_edges_; }

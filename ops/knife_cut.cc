@@ -49,11 +49,11 @@ void KnifeCutOp::PrepareEdgeMode(const Mesh& input) {
   }
   if (positions[0] == positions[1]) throw FieldError("edge_points", "both points name the same edge");
   const int mid[2] = {input.NumVertices(), input.NumVertices() + 1};
-  const HalfedgeTopology topology(input.faces, input.NumVertices());
+  const auto topology = HalfedgeTopology::Of(input);
   int split_edge[2];
   for (int k = 0; k < 2; ++k) {
     split_edges_.push_back({face[positions[k]], face[(positions[k] + 1) % n]});
-    split_edge[k] = topology.CornerEdge(faces[0], positions[k]);
+    split_edge[k] = topology->CornerEdge(faces[0], positions[k]);
   }
   for (int f = 0; f < input.NumFaces(); ++f) {
     if (f == faces[0]) {
@@ -74,7 +74,7 @@ void KnifeCutOp::PrepareEdgeMode(const Mesh& input) {
     for (int i = 0; i < static_cast<int>(p.size()); ++i) {
       loop.push_back(p[i]);
       for (int k = 0; k < 2; ++k) {
-        if (topology.CornerEdge(f, i) == split_edge[k]) loop.push_back(mid[k]);
+        if (topology->CornerEdge(f, i) == split_edge[k]) loop.push_back(mid[k]);
       }
     }
     output_faces_.push_back(loop);
@@ -88,13 +88,13 @@ void KnifeCutOp::PreparePlaneMode(const Mesh& input) {
     side[v] = d > kPlaneEpsilon ? 1 : (d < -kPlaneEpsilon ? -1 : 0);
   }
   // New vertices on crossing edges, numbered in face-loop order of first appearance.
-  const HalfedgeTopology topology(input.faces, input.NumVertices());
-  std::vector<int> new_vertex_of_edge(topology.NumEdges(), -1);
+  const auto topology = HalfedgeTopology::Of(input);
+  std::vector<int> new_vertex_of_edge(topology->NumEdges(), -1);
   for (int f = 0; f < input.NumFaces(); ++f) {
     const Polygon& face = input.faces[f];
     for (int i = 0; i < static_cast<int>(face.size()); ++i) {
       const int a = face[i], b = face[(i + 1) % face.size()];
-      int& vertex = new_vertex_of_edge[topology.CornerEdge(f, i)];
+      int& vertex = new_vertex_of_edge[topology->CornerEdge(f, i)];
       if (side[a] * side[b] >= 0 || vertex >= 0) continue;
       vertex = input.NumVertices() + static_cast<int>(split_edges_.size());
       split_edges_.push_back({a, b});
@@ -108,7 +108,7 @@ void KnifeCutOp::PreparePlaneMode(const Mesh& input) {
       const int a = face[i];
       if (side[a] == 0) on_plane.push_back(static_cast<int>(loop.size()));
       loop.push_back(a);
-      const int vertex = new_vertex_of_edge[topology.CornerEdge(f, i)];
+      const int vertex = new_vertex_of_edge[topology->CornerEdge(f, i)];
       if (vertex >= 0) {
         on_plane.push_back(static_cast<int>(loop.size()));
         loop.push_back(vertex);

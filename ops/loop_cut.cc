@@ -90,26 +90,26 @@ std::vector<std::pair<int, int>> GrowRing(const Mesh& input, const HalfedgeTopol
 void LoopCutOp::Prepare(const Mesh& input) {
   num_input_vertices_ = input.NumVertices();
   const auto& v = input.vertices;
-  const HalfedgeTopology topology(input.faces, input.NumVertices());
-  std::vector<bool> parallel(topology.NumEdges());
-  for (int e = 0; e < topology.NumEdges(); ++e) {
-    const auto [a, b] = topology.EdgeVertices(e);
+  const auto topology = HalfedgeTopology::Of(input);
+  std::vector<bool> parallel(topology->NumEdges());
+  for (int e = 0; e < topology->NumEdges(); ++e) {
+    const auto [a, b] = topology->EdgeVertices(e);
     const Vec3d d = v[b] - v[a];
     const double length = d.norm();
     parallel[e] = length > 0 && std::abs(d[axis_]) >= 0.95 * length;
   }
-  const int seed = SeedEdge(input, topology, parallel, near_);
+  const int seed = SeedEdge(input, *topology, parallel, near_);
   if (seed < 0) throw FieldError("near", "no edge parallel to the axis " + kAxes[axis_]);
   std::vector<int> ring_of_edge;
-  ring_ = GrowRing(input, topology, parallel, seed, &ring_of_edge);
+  ring_ = GrowRing(input, *topology, parallel, seed, &ring_of_edge);
 
   // Cut vertex k (1..cuts) along corner i of face f.
   auto cut = [&](int f, int i, int k) {
-    const int r = ring_of_edge[topology.CornerEdge(f, i)];
+    const int r = ring_of_edge[topology->CornerEdge(f, i)];
     const int base = num_input_vertices_ + r * cuts_ - 1;
     return ring_[r].first == input.faces[f][i] ? base + k : base + cuts_ + 1 - k;
   };
-  auto in_ring = [&](int f, int i) { return ring_of_edge[topology.CornerEdge(f, i)] >= 0; };
+  auto in_ring = [&](int f, int i) { return ring_of_edge[topology->CornerEdge(f, i)] >= 0; };
 
   output_faces_.clear();
   for (int f = 0; f < input.NumFaces(); ++f) {
