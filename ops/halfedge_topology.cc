@@ -63,7 +63,7 @@ std::shared_ptr<const HalfedgeTopology> HalfedgeTopology::Of(const Mesh& mesh) {
   return topology;
 }
 
-HalfedgeTopology::HalfedgeTopology(const std::vector<Polygon>& faces, int num_vertices)
+HalfedgeTopology::HalfedgeTopology(const std::vector<Polygon>& faces, int num_vertices, Winding winding)
     : num_vertices_(num_vertices) {
   SilenceOpenMesh();
   size_t num_corners = 0;
@@ -71,15 +71,39 @@ HalfedgeTopology::HalfedgeTopology(const std::vector<Polygon>& faces, int num_ve
   mesh_.reserve(num_vertices, num_corners / 2 + 1, faces.size());
   for (int v = 0; v < num_vertices; ++v) mesh_.add_vertex();
   std::vector<VertexHandle> handles;
-  for (const Polygon& face : faces) AddFace(face, &handles);
+  reversed_.assign(faces.size(), false);
+  for (const Polygon& face : faces) AddFace(face, winding, &handles);
   NumberCornersAndEdges(faces);
 }
 
-// Adds `face` as face mesh_.n_faces(): on its own vertices if OpenMesh takes it, else on copies.
-void HalfedgeTopology::AddFace(const Polygon& face, std::vector<VertexHandle>* handles) {
+// Adds the face unless OpenMesh's first tests (a closed fan at a vertex, an edge whose side is
+// taken) refuse it, checked here first so that OpenMesh has nothing to report in most cases.
+bool HalfedgeTopology::TryAddFace(const std::vector<VertexHandle>& handles) {
+  const size_t n = handles.size();
+  for (size_t i = 0; i < n; ++i) {
+    if (!mesh_.is_boundary(handles[i])) return false;
+    const HalfedgeHandle h = mesh_.find_halfedge(handles[i], handles[(i + 1) % n]);
+    if (h.is_valid() && !mesh_.is_boundary(h)) return false;
+  }
+  return mesh_.add_face(handles).is_valid();
+}
+
+// Adds `face` as face mesh_.n_faces(): on its own vertices if OpenMesh takes it (or, with
+// kEither, takes it reversed), else on copies.
+void HalfedgeTopology::AddFace(const Polygon& face, Winding winding, std::vector<VertexHandle>* handles) {
   handles->clear();
   for (int v : face) handles->push_back(VertexHandle(v));
-  if (!RepeatsAVertex(face) && mesh_.add_face(*handles).is_valid()) return;
+  if (!RepeatsAVertex(face)) {
+    if (TryAddFace(*handles)) return;
+    if (winding == Winding::kEither) {
+      std::reverse(handles->begin(), handles->end());
+      if (TryAddFace(*handles)) {
+        reversed_[mesh_.n_faces() - 1] = true;
+        return;
+      }
+      std::reverse(handles->begin(), handles->end());
+    }
+  }
   if (copies_.empty()) copies_.resize(num_vertices_);
   for (size_t i = 0; i < face.size(); ++i) {
     (*handles)[i] = mesh_.add_vertex();
@@ -93,19 +117,23 @@ void HalfedgeTopology::AddFace(const Polygon& face, std::vector<VertexHandle>* h
 // first), and edge numbers: OpenMesh's edge order, copies of one edge sharing its number.
 void HalfedgeTopology::NumberCornersAndEdges(const std::vector<Polygon>& faces) {
   face_offset_.assign(1, 0);
-  corner_halfedge_.clear();
+  for (const Polygon& face : faces) face_offset_.push_back(face_offset_.back() + static_cast<int>(face.size()));
+  corner_halfedge_.resize(face_offset_.back());
   halfedge_corner_.assign(mesh_.n_halfedges(), {-1, -1});
   for (int f = 0; f < static_cast<int>(faces.size()); ++f) {
+    const int n = static_cast<int>(faces[f].size());
     HalfedgeHandle h = mesh_.next_halfedge_handle(mesh_.halfedge_handle(OpenMesh::FaceHandle(f)));
-    for (int c = 0; c < static_cast<int>(faces[f].size()); ++c, h = mesh_.next_halfedge_handle(h)) {
-      corner_halfedge_.push_back(h.idx());
+    for (int j = 0; j < n; ++j, h = mesh_.next_halfedge_handle(h)) {
+      // Reversed, halfedge j runs face[n - 1 - j] -> face[n - 2 - j]: corner n - 2 - j's edge.
+      const int c = reversed_[f] ? (2 * n - 2 - j) % n : j;
+      corner_halfedge_[face_offset_[f] + c] = h.idx();
       halfedge_corner_[h.idx()] = {f, c};
     }
-    face_offset_.push_back(static_cast<int>(corner_halfedge_.size()));
   }
   const int num_openmesh_edges = static_cast<int>(mesh_.n_edges());
   edge_of_openmesh_edge_.resize(num_openmesh_edges);
   edge_vertices_.clear();
+  edge_vertices_.reserve(num_openmesh_edges);
   for (int e = 0; e < num_openmesh_edges; ++e) {
     const HalfedgeHandle h = mesh_.halfedge_handle(OpenMesh::EdgeHandle(e), 0);
     const int a = Original(mesh_.from_vertex_handle(h)), b = Original(mesh_.to_vertex_handle(h));
@@ -156,11 +184,11 @@ int HalfedgeTopology::Edge(int a, int b) const {
 
 int HalfedgeTopology::CornerVertex(const Corner& corner) const {
   const HalfedgeHandle h(corner_halfedge_[face_offset_[corner.face] + corner.corner]);
-  return Original(mesh_.from_vertex_handle(h));
+  return Original(reversed_[corner.face] ? mesh_.to_vertex_handle(h) : mesh_.from_vertex_handle(h));
 }
 
-std::vector<HalfedgeTopology::Corner> HalfedgeTopology::EdgeCorners(int e) const {
-  std::vector<Corner> corners;
+HalfedgeTopology::Corners HalfedgeTopology::EdgeCorners(int e) const {
+  Corners corners;
   auto add = [&](HalfedgeHandle h) {
     if (halfedge_corner_[h.idx()].face >= 0) corners.push_back(halfedge_corner_[h.idx()]);
   };
@@ -175,10 +203,15 @@ std::vector<HalfedgeTopology::Corner> HalfedgeTopology::EdgeCorners(int e) const
   return corners;
 }
 
-std::vector<HalfedgeTopology::Corner> HalfedgeTopology::VertexCorners(int v) const {
-  std::vector<Corner> corners;
+HalfedgeTopology::Corners HalfedgeTopology::VertexCorners(int v) const {
+  Corners corners;
   ForEachOutgoing(v, [&](HalfedgeHandle h) {
-    if (halfedge_corner_[h.idx()].face >= 0) corners.push_back(halfedge_corner_[h.idx()]);
+    Corner corner = halfedge_corner_[h.idx()];
+    if (corner.face < 0) return;
+    // A reversed face's halfedge leaving v is the corner ending at v.
+    const int n = face_offset_[corner.face + 1] - face_offset_[corner.face];
+    if (reversed_[corner.face]) corner.corner = (corner.corner + 1) % n;
+    corners.push_back(corner);
   });
   std::sort(corners.begin(), corners.end());
   return corners;

@@ -14,6 +14,7 @@
 #pragma once
 
 #include <OpenMesh/Core/Mesh/PolyConnectivity.hh>
+#include <boost/container/small_vector.hpp>
 
 #include <memory>
 #include <utility>
@@ -30,9 +31,17 @@ class HalfedgeTopology {
     int face, corner;
     bool operator<(const Corner& o) const { return face != o.face ? face < o.face : corner < o.corner; }
   };
+  // The corners of an edge or at a vertex: two, or a handful, without a heap allocation.
+  using Corners = boost::container::small_vector<Corner, 6>;
+
+  // How faces are taken. kEither: for a face list whose winding is still to be made consistent
+  // (Bevel's new faces): a face OpenMesh refuses is tried reversed before it goes on copies.
+  // Edge and corner queries answer as for kAsGiven, but edge numbers and directions follow the
+  // faces as OpenMesh took them, and RegionBoundary is meaningless.
+  enum class Winding { kAsGiven, kEither };
 
   // `faces` index vertices 0 .. num_vertices - 1 (#F loops of at least 3).
-  HalfedgeTopology(const std::vector<Polygon>& faces, int num_vertices);
+  HalfedgeTopology(const std::vector<Polygon>& faces, int num_vertices, Winding winding = Winding::kAsGiven);
   // The half-edge mesh of `mesh`'s faces, built once per distinct face list: a search prepares
   // many ops (every choice it tries) on one mesh, and building costs more than most topology
   // passes. The last kCached face lists are kept (thread-safe).
@@ -54,9 +63,9 @@ class HalfedgeTopology {
   int CornerVertex(const Corner& corner) const;
 
   // The faces around edge e: its corners, in every face that has it, by face then corner.
-  std::vector<Corner> EdgeCorners(int e) const;
+  Corners EdgeCorners(int e) const;
   // The one-ring of v: the corners at v (faces[f][c] == v), by face then corner.
-  std::vector<Corner> VertexCorners(int v) const;
+  Corners VertexCorners(int v) const;
   // The next edge of a ring through a quad: corner c's opposite corner in quad f.
   static Corner AcrossQuad(const Corner& corner) { return {corner.face, (corner.corner + 2) % 4}; }
   // The boundary of the face set `region`: the corners of its faces whose edge is not run the
@@ -72,13 +81,15 @@ class HalfedgeTopology {
   // Calls visit(halfedge) for each OpenMesh halfedge leaving v or one of its copies.
   template <typename Visit>
   void ForEachOutgoing(int v, Visit visit) const;
-  void AddFace(const Polygon& face, std::vector<VertexHandle>* handles);
+  bool TryAddFace(const std::vector<VertexHandle>& handles);
+  void AddFace(const Polygon& face, Winding winding, std::vector<VertexHandle>* handles);
   void NumberCornersAndEdges(const std::vector<Polygon>& faces);
 
   OpenMesh::PolyConnectivity mesh_;
   int num_vertices_ = 0;
   std::vector<int> copy_of_;                 // OpenMesh vertex num_vertices_ + k copies copy_of_[k]
   std::vector<std::vector<int>> copies_;     // input vertex -> its copies (empty when Manifold())
+  std::vector<bool> reversed_;               // face f was taken reversed (Winding::kEither)
   std::vector<int> face_offset_;             // #F + 1: face f's corners are face_offset_[f] ...
   std::vector<int> corner_halfedge_;         // flat corner -> OpenMesh halfedge
   std::vector<Corner> halfedge_corner_;      // OpenMesh halfedge -> corner ({-1, -1}: boundary)
