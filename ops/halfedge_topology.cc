@@ -76,11 +76,12 @@ HalfedgeTopology::HalfedgeTopology(const std::vector<Polygon>& faces, int num_ve
   NumberCornersAndEdges(faces);
 }
 
-// Adds the face unless OpenMesh's first tests (a closed fan at a vertex, an edge whose side is
-// taken) refuse it, checked here first so that OpenMesh has nothing to report in most cases.
-bool HalfedgeTopology::TryAddFace(const std::vector<VertexHandle>& handles) {
+// Adds the face if OpenMesh takes it. With kEither, where refusals are common, OpenMesh's first
+// tests (a closed fan at a vertex, an edge whose side is taken) are made here first, sparing
+// OpenMesh's (silenced) report; with kAsGiven a refusal is rare and they would cost time.
+bool HalfedgeTopology::TryAddFace(const std::vector<VertexHandle>& handles, Winding winding) {
   const size_t n = handles.size();
-  for (size_t i = 0; i < n; ++i) {
+  for (size_t i = 0; winding == Winding::kEither && i < n; ++i) {
     if (!mesh_.is_boundary(handles[i])) return false;
     const HalfedgeHandle h = mesh_.find_halfedge(handles[i], handles[(i + 1) % n]);
     if (h.is_valid() && !mesh_.is_boundary(h)) return false;
@@ -94,11 +95,11 @@ void HalfedgeTopology::AddFace(const Polygon& face, Winding winding, std::vector
   handles->clear();
   for (int v : face) handles->push_back(VertexHandle(v));
   if (!RepeatsAVertex(face)) {
-    if (TryAddFace(*handles)) return;
+    if (TryAddFace(*handles, winding)) return;
     if (winding == Winding::kEither) {
       std::reverse(handles->begin(), handles->end());
-      if (TryAddFace(*handles)) {
-        reversed_[mesh_.n_faces() - 1] = true;
+      if (TryAddFace(*handles, winding)) {
+        reversed_[mesh_.n_faces() - 1] = any_reversed_ = true;
         return;
       }
       std::reverse(handles->begin(), handles->end());
@@ -225,10 +226,17 @@ std::vector<HalfedgeTopology::Corner> HalfedgeTopology::RegionBoundary(const std
   std::vector<Corner> boundary;
   for (int f : region) {
     for (int c = 0; c < face_offset_[f + 1] - face_offset_[f]; ++c) {
-      const int from = CornerVertex({f, c});
       bool reversed = false;  // run b -> a by a face of the region
-      for (const Corner& other : EdgeCorners(CornerEdge(f, c))) {
-        reversed = reversed || (in_region(other.face) && CornerVertex(other) != from);
+      if (Manifold() && !any_reversed_) {
+        // The edge's only other corner is across its halfedge, and runs the other way.
+        const HalfedgeHandle h(corner_halfedge_[face_offset_[f] + c]);
+        const int other = halfedge_corner_[mesh_.opposite_halfedge_handle(h).idx()].face;
+        reversed = other >= 0 && in_region(other);
+      } else {
+        const int from = CornerVertex({f, c});
+        for (const Corner& other : EdgeCorners(CornerEdge(f, c))) {
+          reversed = reversed || (in_region(other.face) && CornerVertex(other) != from);
+        }
       }
       if (!reversed) boundary.push_back({f, c});
     }

@@ -81,7 +81,7 @@ class HalfedgeTopology {
   // Calls visit(halfedge) for each OpenMesh halfedge leaving v or one of its copies.
   template <typename Visit>
   void ForEachOutgoing(int v, Visit visit) const;
-  bool TryAddFace(const std::vector<VertexHandle>& handles);
+  bool TryAddFace(const std::vector<VertexHandle>& handles, Winding winding);
   void AddFace(const Polygon& face, Winding winding, std::vector<VertexHandle>* handles);
   void NumberCornersAndEdges(const std::vector<Polygon>& faces);
 
@@ -90,6 +90,7 @@ class HalfedgeTopology {
   std::vector<int> copy_of_;                 // OpenMesh vertex num_vertices_ + k copies copy_of_[k]
   std::vector<std::vector<int>> copies_;     // input vertex -> its copies (empty when Manifold())
   std::vector<bool> reversed_;               // face f was taken reversed (Winding::kEither)
+  bool any_reversed_ = false;
   std::vector<int> face_offset_;             // #F + 1: face f's corners are face_offset_[f] ...
   std::vector<int> corner_halfedge_;         // flat corner -> OpenMesh halfedge
   std::vector<Corner> halfedge_corner_;      // OpenMesh halfedge -> corner ({-1, -1}: boundary)
