@@ -35,18 +35,26 @@ if(NOT _opgraph_vtk_was_disabled)
   unset(CMAKE_DISABLE_FIND_PACKAGE_VTK)
 endif()
 
-# OpenSubdiv by hand: Debian's OpenSubdivConfig.cmake is broken.
-find_path(OPENSUBDIV_INCLUDE_DIR opensubdiv/far/topologyRefiner.h)
-find_library(OPENSUBDIV_CPU_LIBRARY osdCPU)
-if(OPENSUBDIV_INCLUDE_DIR AND OPENSUBDIV_CPU_LIBRARY)
-  if(NOT TARGET opgraph::OpenSubdiv)
-    add_library(opgraph::OpenSubdiv UNKNOWN IMPORTED)
-    set_target_properties(opgraph::OpenSubdiv PROPERTIES
-      IMPORTED_LOCATION "${OPENSUBDIV_CPU_LIBRARY}"
-      INTERFACE_INCLUDE_DIRECTORIES "${OPENSUBDIV_INCLUDE_DIR}")
+# A library found by its header and library file, as the imported target opgraph::<name>.
+macro(_opgraph_find_by_hand name header library)
+  find_path(_opgraph_${name}_include_dir ${header})
+  find_library(_opgraph_${name}_library ${library})
+  if(_opgraph_${name}_include_dir AND _opgraph_${name}_library)
+    if(NOT TARGET opgraph::${name})
+      add_library(opgraph::${name} UNKNOWN IMPORTED)
+      set_target_properties(opgraph::${name} PROPERTIES
+        IMPORTED_LOCATION "${_opgraph_${name}_library}"
+        INTERFACE_INCLUDE_DIRECTORIES "${_opgraph_${name}_include_dir}")
+    endif()
+  elseif(_opgraph_as_package)
+    list(APPEND _opgraph_missing ${name})
+  else()
+    message(FATAL_ERROR "${name} not found (${header}, lib${library})")
   endif()
-elseif(_opgraph_as_package)
-  list(APPEND _opgraph_missing OpenSubdiv)
-else()
-  message(FATAL_ERROR "OpenSubdiv not found (opensubdiv/far/topologyRefiner.h, libosdCPU)")
-endif()
+endmacro()
+
+# OpenSubdiv by hand: Debian's OpenSubdivConfig.cmake is broken.
+_opgraph_find_by_hand(OpenSubdiv opensubdiv/far/topologyRefiner.h osdCPU)
+# OpenMesh (the ops' half-edge connectivity, ops/halfedge_topology.h; Debian: libopenmesh-dev) by
+# hand: its OpenMeshConfig.cmake has no version file and defines bare target names.
+_opgraph_find_by_hand(OpenMesh OpenMesh/Core/Mesh/PolyConnectivity.hh OpenMeshCore)

@@ -4,9 +4,9 @@
 #include <algorithm>
 #include <deque>
 #include <limits>
-#include <unordered_map>
 
 #include "core/geometry.h"
+#include "ops/halfedge_topology.h"
 
 namespace opgraph {
 
@@ -53,37 +53,28 @@ int BevelOp::OutputId(const BevVert& bv, int i, int j, int k) const { return bv.
 void BevelOp::Prepare(const Mesh& input) {
   const int num_vertices = input.NumVertices();
   input_faces_ = input.faces;
-  std::unordered_map<long long, std::vector<std::pair<int, int>>> edge_faces;  // edge -> (face, corner)
-  std::vector<std::vector<std::pair<int, int>>> corners(num_vertices);
-  for (int f = 0; f < input.NumFaces(); ++f) {
-    const Polygon& face = input.faces[f];
-    for (size_t c = 0; c < face.size(); ++c) {
-      edge_faces[EdgeKey(face[c], face[(c + 1) % face.size()])].push_back({f, static_cast<int>(c)});
-      corners[face[c]].push_back({f, static_cast<int>(c)});
-    }
-  }
+  const auto topology = HalfedgeTopology::Of(input);
   std::vector<Vec3d> normals(input.NumFaces());
   for (int f = 0; f < input.NumFaces(); ++f) normals[f] = SafeNormalized(FaceAreaNormal(input.vertices, input.faces[f]));
 
   // Beveled edges, as the modifier tags them (angle test in float, as Blender).
   const double threshold = std::cos(static_cast<float>(DegToRad(angle_limit_deg_)) + 0.000000175f);
-  auto is_beveled = [&](int a, int b) {
-    const auto it = edge_faces.find(EdgeKey(a, b));
-    if (it == edge_faces.end() || it->second.size() != 2) return false;
-    return !angle_limit_ || normals[it->second[0].first].dot(normals[it->second[1].first]) < threshold;
-  };
+  std::vector<bool> beveled(topology->NumEdges(), false);
   std::vector<bool> touched(num_vertices, false);
   bool any = false;
-  for (const auto& [key, faces] : edge_faces) {
-    const Polygon& face = input.faces[faces[0].first];
-    const int a = face[faces[0].second], b = face[(faces[0].second + 1) % face.size()];
-    if (is_beveled(a, b)) touched[a] = touched[b] = any = true;
+  for (int e = 0; e < topology->NumEdges(); ++e) {
+    const HalfedgeTopology::Corners faces = topology->EdgeCorners(e);
+    if (faces.size() != 2) continue;
+    beveled[e] = !angle_limit_ || normals[faces[0].face].dot(normals[faces[1].face]) < threshold;
+    const auto [a, b] = topology->EdgeVertices(e);
+    if (beveled[e]) touched[a] = touched[b] = any = true;
   }
   if (!any) throw FieldError("limit_method", "no edge of the input is beveled");
+  auto is_beveled = [&](int f, int c) { return beveled[topology->CornerEdge(f, c)]; };
 
-  auto vertex_normal = [&](int v) {
+  auto vertex_normal = [&](int v, const HalfedgeTopology::Corners& corners) {
     Vec3d n(0, 0, 0);
-    for (const auto& [f, c] : corners[v]) {
+    for (const auto& [f, c] : corners) {
       const Polygon& face = input.faces[f];
       const int k = static_cast<int>(face.size());
       n += normals[f] * bevel::Angle<double>(input.vertices[face[(c + k - 1) % k]] - input.vertices[v],
@@ -100,32 +91,31 @@ void BevelOp::Prepare(const Mesh& input) {
     if (!touched[v]) continue;
     BevVert bv;
     bv.vertex = v;
+    const HalfedgeTopology::Corners corners = topology->VertexCorners(v);
     int beveled_here = 0;  // for messages before the fan is known
-    for (const auto& [f0, c0] : corners[v]) {
-      const Polygon& face = input.faces[f0];
-      beveled_here += is_beveled(v, face[(c0 + 1) % face.size()]);
-    }
-    int f = corners[v][0].first, c = corners[v][0].second;
-    for (size_t step = 0; step < corners[v].size(); ++step) {
+    for (const auto& [f0, c0] : corners) beveled_here += is_beveled(f0, c0);
+    int f = corners[0].face, c = corners[0].corner;
+    for (size_t step = 0; step < corners.size(); ++step) {
       const Polygon& face = input.faces[f];
       const int k = static_cast<int>(face.size());
       const int b = face[(c + 1) % k], a = face[(c + k - 1) % k];
       EdgeHalf half;
       half.other = b;
       half.fnext = f;
-      half.beveled = is_beveled(v, b);
+      half.beveled = is_beveled(f, c);
       bv.edges.push_back(half);
-      const auto& users = edge_faces[EdgeKey(v, a)];
+      // Across the incoming edge a -> v to the next face of the fan.
+      const auto users = topology->EdgeCorners(topology->CornerEdge(f, (c + k - 1) % k));
       if (users.size() != 2) throw FieldError("limit_method", Unsupported(beveled_here, v, "on an open or non-manifold edge"));
-      const auto& other = users[0].first == f ? users[1] : users[0];
-      if (other.first == f) throw FieldError("limit_method", Unsupported(beveled_here, v, "an edge used twice by one face"));
-      const Polygon& g = input.faces[other.first];
+      const auto& other = users[0].face == f ? users[1] : users[0];
+      if (other.face == f) throw FieldError("limit_method", Unsupported(beveled_here, v, "an edge used twice by one face"));
+      const Polygon& g = input.faces[other.face];
       const int kg = static_cast<int>(g.size());
-      const int cg = g[other.second] == v ? other.second : (other.second + 1) % kg;
+      const int cg = g[other.corner] == v ? other.corner : (other.corner + 1) % kg;
       if (g[(cg + 1) % kg] != a) throw FieldError("limit_method", Unsupported(beveled_here, v, "inconsistent face winding"));
-      f = other.first;
+      f = other.face;
       c = cg;
-      if (f == corners[v][0].first && c == corners[v][0].second && step + 1 != corners[v].size()) {
+      if (f == corners[0].face && c == corners[0].corner && step + 1 != corners.size()) {
         throw FieldError("limit_method", Unsupported(beveled_here, v, "more than one fan of faces"));
       }
     }
@@ -136,7 +126,7 @@ void BevelOp::Prepare(const Mesh& input) {
 
     // Boundary vertices (build_boundary), with the placement rule decided on the input.
     const Vec3d& p = input.vertices[v];
-    const Vec3d vno = vertex_normal(v);
+    const Vec3d vno = vertex_normal(v, corners);
     auto on_plane = [&](int h) {
       const double dot = normals[bv.edges[h].fprev].dot(normals[bv.edges[h].fnext]);
       return std::abs(dot + 1) <= bevel::kEpsilonBig || std::abs(dot - 1) <= bevel::kEpsilonBig;
@@ -423,10 +413,11 @@ void BevelOp::Prepare(const Mesh& input) {
     output_faces_.push_back(rebuilt);
   }
   const size_t num_rebuilt = output_faces_.size();
-  for (const Polygon& face : input.faces) {
-    for (size_t c = 0; c < face.size(); ++c) {
+  for (int f = 0; f < input.NumFaces(); ++f) {
+    const Polygon& face = input.faces[f];
+    for (int c = 0; c < static_cast<int>(face.size()); ++c) {
       const int a = face[c], b = face[(c + 1) % face.size()];
-      if (a > b || !is_beveled(a, b)) continue;  // each beveled edge once
+      if (a > b || !is_beveled(f, c)) continue;  // each beveled edge once
       const BevVert& bva = bev_verts_[vertex_to_bev_[a]];
       const BevVert& bvb = bev_verts_[vertex_to_bev_[b]];
       int ha = 0, hb = 0;
@@ -473,11 +464,7 @@ void BevelOp::Prepare(const Mesh& input) {
   }
   // Orient new faces against their already oriented neighbours (breadth first from the
   // rebuilt originals, whose winding is the input's).
-  std::unordered_map<long long, std::vector<int>> users;
-  for (size_t f = 0; f < output_faces_.size(); ++f) {
-    const Polygon& face = output_faces_[f];
-    for (size_t c = 0; c < face.size(); ++c) users[EdgeKey(face[c], face[(c + 1) % face.size()])].push_back(static_cast<int>(f));
-  }
+  const HalfedgeTopology users(output_faces_, num_output_vertices_, HalfedgeTopology::Winding::kEither);
   std::vector<bool> oriented(output_faces_.size(), false);
   std::deque<int> queue;
   for (size_t f = 0; f < num_rebuilt; ++f) {
@@ -490,7 +477,7 @@ void BevelOp::Prepare(const Mesh& input) {
     const Polygon face = output_faces_[f];
     for (size_t c = 0; c < face.size(); ++c) {
       const int a = face[c], b = face[(c + 1) % face.size()];
-      for (int g : users[EdgeKey(a, b)]) {
+      for (const auto& [g, corner] : users.EdgeCorners(users.Edge(a, b))) {
         if (oriented[g]) continue;
         Polygon& other = output_faces_[g];
         for (size_t d = 0; d < other.size(); ++d) {

@@ -1,7 +1,8 @@
 #include "ops/knife_cut.h"
 
 #include <limits>
-#include <map>
+
+#include "ops/halfedge_topology.h"
 
 namespace opgraph {
 
@@ -48,7 +49,12 @@ void KnifeCutOp::PrepareEdgeMode(const Mesh& input) {
   }
   if (positions[0] == positions[1]) throw FieldError("edge_points", "both points name the same edge");
   const int mid[2] = {input.NumVertices(), input.NumVertices() + 1};
-  for (int k = 0; k < 2; ++k) split_edges_.push_back({face[positions[k]], face[(positions[k] + 1) % n]});
+  const auto topology = HalfedgeTopology::Of(input);
+  int split_edge[2];
+  for (int k = 0; k < 2; ++k) {
+    split_edges_.push_back({face[positions[k]], face[(positions[k] + 1) % n]});
+    split_edge[k] = topology->CornerEdge(faces[0], positions[k]);
+  }
   for (int f = 0; f < input.NumFaces(); ++f) {
     if (f == faces[0]) {
       // Walk from each midpoint to the other along the loop: two faces.
@@ -65,11 +71,10 @@ void KnifeCutOp::PrepareEdgeMode(const Mesh& input) {
     }
     Polygon loop;
     const Polygon& p = input.faces[f];
-    for (size_t i = 0; i < p.size(); ++i) {
+    for (int i = 0; i < static_cast<int>(p.size()); ++i) {
       loop.push_back(p[i]);
-      const int a = p[i], b = p[(i + 1) % p.size()];
       for (int k = 0; k < 2; ++k) {
-        if (EdgeKey(a, b) == EdgeKey(split_edges_[k].first, split_edges_[k].second)) loop.push_back(mid[k]);
+        if (topology->CornerEdge(f, i) == split_edge[k]) loop.push_back(mid[k]);
       }
     }
     output_faces_.push_back(loop);
@@ -83,12 +88,15 @@ void KnifeCutOp::PreparePlaneMode(const Mesh& input) {
     side[v] = d > kPlaneEpsilon ? 1 : (d < -kPlaneEpsilon ? -1 : 0);
   }
   // New vertices on crossing edges, numbered in face-loop order of first appearance.
-  std::map<decltype(EdgeKey(0, 0)), int> new_vertex_of_edge;
-  for (const Polygon& face : input.faces) {
-    for (size_t i = 0; i < face.size(); ++i) {
+  const auto topology = HalfedgeTopology::Of(input);
+  std::vector<int> new_vertex_of_edge(topology->NumEdges(), -1);
+  for (int f = 0; f < input.NumFaces(); ++f) {
+    const Polygon& face = input.faces[f];
+    for (int i = 0; i < static_cast<int>(face.size()); ++i) {
       const int a = face[i], b = face[(i + 1) % face.size()];
-      if (side[a] * side[b] >= 0 || new_vertex_of_edge.count(EdgeKey(a, b))) continue;
-      new_vertex_of_edge[EdgeKey(a, b)] = input.NumVertices() + static_cast<int>(split_edges_.size());
+      int& vertex = new_vertex_of_edge[topology->CornerEdge(f, i)];
+      if (side[a] * side[b] >= 0 || vertex >= 0) continue;
+      vertex = input.NumVertices() + static_cast<int>(split_edges_.size());
       split_edges_.push_back({a, b});
     }
   }
@@ -96,14 +104,14 @@ void KnifeCutOp::PreparePlaneMode(const Mesh& input) {
     const Polygon& face = input.faces[f];
     Polygon loop;
     std::vector<int> on_plane;  // positions in `loop`
-    for (size_t i = 0; i < face.size(); ++i) {
-      const int a = face[i], b = face[(i + 1) % face.size()];
+    for (int i = 0; i < static_cast<int>(face.size()); ++i) {
+      const int a = face[i];
       if (side[a] == 0) on_plane.push_back(static_cast<int>(loop.size()));
       loop.push_back(a);
-      const auto it = new_vertex_of_edge.find(EdgeKey(a, b));
-      if (it != new_vertex_of_edge.end()) {
+      const int vertex = new_vertex_of_edge[topology->CornerEdge(f, i)];
+      if (vertex >= 0) {
         on_plane.push_back(static_cast<int>(loop.size()));
-        loop.push_back(it->second);
+        loop.push_back(vertex);
       }
     }
     const int n = static_cast<int>(loop.size());

@@ -3,7 +3,8 @@
 #include <cmath>
 #include <deque>
 #include <limits>
-#include <unordered_map>
+
+#include "ops/halfedge_topology.h"
 
 namespace opgraph {
 
@@ -19,40 +20,24 @@ LoopCutOp::LoopCutOp(const Json& params) {
   reader.Finish();
 }
 
-void LoopCutOp::Prepare(const Mesh& input) {
-  num_input_vertices_ = input.NumVertices();
+namespace {
+
+// The seed edge (see loop_cut.h): the axis-parallel edge whose midpoint is nearest to `near`.
+// Ties (a `near` point midway between two rings) are broken by position, not by edge order,
+// which differs in Blender: within `tie`, the midpoint with the smallest x, then y, then z.
+int SeedEdge(const Mesh& input, const HalfedgeTopology& topology, const std::vector<bool>& parallel,
+             const Vec3d& near) {
   const auto& v = input.vertices;
-  // Edges in order of first appearance, with their adjacent faces.
-  std::vector<std::pair<int, int>> edges;
-  std::vector<std::vector<int>> edge_faces;
-  std::unordered_map<long long, int> edge_index;
-  for (int f = 0; f < input.NumFaces(); ++f) {
-    const Polygon& face = input.faces[f];
-    for (size_t i = 0; i < face.size(); ++i) {
-      const int a = face[i], b = face[(i + 1) % face.size()];
-      auto it = edge_index.find(EdgeKey(a, b));
-      if (it == edge_index.end()) {
-        it = edge_index.emplace(EdgeKey(a, b), static_cast<int>(edges.size())).first;
-        edges.push_back({a, b});
-        edge_faces.emplace_back();
-      }
-      edge_faces[it->second].push_back(f);
-    }
-  }
-  auto parallel = [&](int e) {
-    const Vec3d d = v[edges[e].second] - v[edges[e].first];
-    const double length = d.norm();
-    return length > 0 && std::abs(d[axis_]) >= 0.95 * length;
-  };
-  // Ties (a `near` point midway between two rings) are broken by position, not by edge order,
-  // which differs in Blender: within `tie`, the midpoint with the smallest x, then y, then z.
   Vec3d lo = Vec3d::Constant(std::numeric_limits<double>::max()), hi = -lo;
   for (const Vec3d& p : v) lo = lo.cwiseMin(p), hi = hi.cwiseMax(p);
   const double tie = kLoopCutTie * (hi - lo).norm();
-  auto midpoint = [&](int e) -> Vec3d { return 0.5 * (v[edges[e].first] + v[edges[e].second]); };
+  auto midpoint = [&](int e) -> Vec3d {
+    const auto [a, b] = topology.EdgeVertices(e);
+    return 0.5 * (v[a] + v[b]);
+  };
   double best = std::numeric_limits<double>::infinity();
-  for (int e = 0; e < static_cast<int>(edges.size()); ++e) {
-    if (parallel(e)) best = std::min(best, (midpoint(e) - near_).norm());
+  for (int e = 0; e < topology.NumEdges(); ++e) {
+    if (parallel[e]) best = std::min(best, (midpoint(e) - near).norm());
   }
   auto before = [&](const Vec3d& a, const Vec3d& b) {
     for (int k = 0; k < 3; ++k) {
@@ -62,61 +47,89 @@ void LoopCutOp::Prepare(const Mesh& input) {
     return false;
   };
   int seed = -1;
-  for (int e = 0; e < static_cast<int>(edges.size()); ++e) {
-    if (!parallel(e) || (midpoint(e) - near_).norm() > best + tie) continue;
+  for (int e = 0; e < topology.NumEdges(); ++e) {
+    if (!parallel[e] || (midpoint(e) - near).norm() > best + tie) continue;
     if (seed < 0 || before(midpoint(e), midpoint(seed))) seed = e;
   }
-  if (seed < 0) throw FieldError("near", "no edge parallel to the axis " + kAxes[axis_]);
+  return seed;
+}
 
-  // BFS across quads, propagating the orientation (a corresponds to the vertex adjacent to a).
-  ring_.clear();
-  std::unordered_map<long long, int> ring_index;
-  std::deque<int> queue;
-  ring_index[EdgeKey(edges[seed].first, edges[seed].second)] = 0;
-  ring_.push_back(edges[seed]);
-  queue.push_back(seed);
+// The ring from `seed`: BFS across quads, propagating the orientation (an oriented edge's first
+// vertex corresponds to the first vertex of the edge it was reached from). *ring_of_edge gets
+// each edge's index in the ring, or -1.
+std::vector<std::pair<int, int>> GrowRing(const Mesh& input, const HalfedgeTopology& topology,
+                                          const std::vector<bool>& parallel, int seed,
+                                          std::vector<int>* ring_of_edge) {
+  std::vector<std::pair<int, int>> ring = {topology.EdgeVertices(seed)};
+  ring_of_edge->assign(topology.NumEdges(), -1);
+  (*ring_of_edge)[seed] = 0;
+  std::deque<int> queue = {seed};
   while (!queue.empty()) {
     const int e = queue.front();
     queue.pop_front();
-    const auto oriented = ring_[ring_index.at(EdgeKey(edges[e].first, edges[e].second))];
-    for (int f : edge_faces[e]) {
-      const Polygon& q = input.faces[f];
+    const auto oriented = ring[(*ring_of_edge)[e]];
+    for (const HalfedgeTopology::Corner& corner : topology.EdgeCorners(e)) {
+      const Polygon& q = input.faces[corner.face];
       if (q.size() != 4) continue;
-      int i = 0;
-      while (EdgeKey(q[i], q[(i + 1) % 4]) != EdgeKey(oriented.first, oriented.second)) ++i;
-      const int c = q[(i + 2) % 4], d = q[(i + 3) % 4];  // edge i+2: c -> d; d adjacent to q[i]
-      const int o = edge_index.at(EdgeKey(c, d));
-      if (ring_index.count(EdgeKey(c, d)) || !parallel(o)) continue;
-      ring_index[EdgeKey(c, d)] = static_cast<int>(ring_.size());
-      ring_.push_back(oriented.first == q[i] ? std::make_pair(d, c) : std::make_pair(c, d));
+      int i = 0;  // the quad's first corner on e
+      while (topology.CornerEdge(corner.face, i) != e) ++i;
+      const HalfedgeTopology::Corner across = HalfedgeTopology::AcrossQuad({corner.face, i});
+      const int c = q[across.corner], d = q[(across.corner + 1) % 4];  // d adjacent to q[i]
+      const int o = topology.CornerEdge(across.face, across.corner);
+      if ((*ring_of_edge)[o] >= 0 || !parallel[o]) continue;
+      (*ring_of_edge)[o] = static_cast<int>(ring.size());
+      ring.push_back(oriented.first == q[i] ? std::make_pair(d, c) : std::make_pair(c, d));
       queue.push_back(o);
     }
   }
+  return ring;
+}
 
-  // Cut vertex k (1..cuts) along the directed edge u -> v.
-  auto cut = [&](int u, int w, int k) {
-    const auto it = ring_index.find(EdgeKey(u, w));
-    const int base = num_input_vertices_ + it->second * cuts_ - 1;
-    return ring_[it->second].first == u ? base + k : base + cuts_ + 1 - k;
+}  // namespace
+
+void LoopCutOp::Prepare(const Mesh& input) {
+  num_input_vertices_ = input.NumVertices();
+  const auto& v = input.vertices;
+  const auto topology = HalfedgeTopology::Of(input);
+  std::vector<bool> parallel(topology->NumEdges());
+  for (int e = 0; e < topology->NumEdges(); ++e) {
+    const auto [a, b] = topology->EdgeVertices(e);
+    const Vec3d d = v[b] - v[a];
+    const double length = d.norm();
+    parallel[e] = length > 0 && std::abs(d[axis_]) >= 0.95 * length;
+  }
+  const int seed = SeedEdge(input, *topology, parallel, near_);
+  if (seed < 0) throw FieldError("near", "no edge parallel to the axis " + kAxes[axis_]);
+  std::vector<int> ring_of_edge;
+  ring_ = GrowRing(input, *topology, parallel, seed, &ring_of_edge);
+
+  // Cut vertex k (1..cuts) along corner i of face f.
+  auto cut = [&](int f, int i, int k) {
+    const int r = ring_of_edge[topology->CornerEdge(f, i)];
+    const int base = num_input_vertices_ + r * cuts_ - 1;
+    return ring_[r].first == input.faces[f][i] ? base + k : base + cuts_ + 1 - k;
   };
-  auto in_ring = [&](int u, int w) { return ring_index.count(EdgeKey(u, w)) > 0; };
+  auto in_ring = [&](int f, int i) { return ring_of_edge[topology->CornerEdge(f, i)] >= 0; };
 
   output_faces_.clear();
-  for (const Polygon& face : input.faces) {
+  for (int f = 0; f < input.NumFaces(); ++f) {
+    const Polygon& face = input.faces[f];
     const int n = static_cast<int>(face.size());
     int count = 0;
-    for (int i = 0; i < n; ++i) count += in_ring(face[i], face[(i + 1) % n]);
+    for (int i = 0; i < n; ++i) count += in_ring(f, i);
     if (count == 0) {
       output_faces_.push_back(face);
       continue;
     }
     if (n == 4 && count == 2) {
       int i = 0;
-      while (!in_ring(face[i], face[(i + 1) % 4])) ++i;
-      if (in_ring(face[(i + 2) % 4], face[(i + 3) % 4])) {
-        const int p0 = face[i], p1 = face[(i + 1) % 4], p2 = face[(i + 2) % 4], p3 = face[(i + 3) % 4];
-        auto side_a = [&](int k) { return k == 0 ? p0 : k == cuts_ + 1 ? p1 : cut(p0, p1, k); };
-        auto side_b = [&](int k) { return k == 0 ? p3 : k == cuts_ + 1 ? p2 : cut(p3, p2, k); };
+      while (!in_ring(f, i)) ++i;
+      const int j = (i + 2) % 4;
+      if (in_ring(f, j)) {
+        // Corner j runs p2 -> p3; its cuts counted from p3 match corner i's from p0.
+        const int p0 = face[i], p1 = face[(i + 1) % 4], p2 = face[j], p3 = face[(i + 3) % 4];
+        auto side_a = [&](int k) { return k == 0 ? p0 : k == cuts_ + 1 ? p1 : cut(f, i, k); };
+        auto side_b = [&](int k) { return k == 0 ? p3 : k == cuts_ + 1 ? p2 : cut(f, j, cuts_ + 1 - k); };
         for (int k = 0; k <= cuts_; ++k) {
           output_faces_.push_back({side_a(k), side_a(k + 1), side_b(k + 1), side_b(k)});
         }
@@ -125,10 +138,9 @@ void LoopCutOp::Prepare(const Mesh& input) {
     }
     Polygon loop;
     for (int i = 0; i < n; ++i) {
-      const int a = face[i], b = face[(i + 1) % n];
-      loop.push_back(a);
-      if (in_ring(a, b)) {
-        for (int k = 1; k <= cuts_; ++k) loop.push_back(cut(a, b, k));
+      loop.push_back(face[i]);
+      if (in_ring(f, i)) {
+        for (int k = 1; k <= cuts_; ++k) loop.push_back(cut(f, i, k));
       }
     }
     output_faces_.push_back(loop);

@@ -1,16 +1,14 @@
 #include "ops/region_topology.h"
 
 #include <map>
-#include <set>
+
+#include "ops/halfedge_topology.h"
 
 namespace opgraph {
 
-namespace {
-long long Directed(int a, int b) { return (static_cast<long long>(a) << 32) | static_cast<unsigned>(b); }
-}  // namespace
-
 std::vector<RegionCopy> CopyRegions(const Mesh& input, const std::vector<std::vector<int>>& sets,
                                     std::vector<Polygon>* faces, int* num_vertices) {
+  const auto topology = HalfedgeTopology::Of(input);
   std::vector<RegionCopy> regions;
   std::vector<bool> copied(input.NumFaces(), false);
   std::vector<Polygon> new_faces;
@@ -18,20 +16,12 @@ std::vector<RegionCopy> CopyRegions(const Mesh& input, const std::vector<std::ve
   for (const std::vector<int>& set : sets) {
     RegionCopy region;
     region.faces = set;
-    std::set<long long> directed;
-    for (int f : set) {
-      copied[f] = true;
-      const Polygon& p = input.faces[f];
-      for (size_t i = 0; i < p.size(); ++i) directed.insert(Directed(p[i], p[(i + 1) % p.size()]));
+    for (int f : set) copied[f] = true;
+    for (const HalfedgeTopology::Corner& corner : topology->RegionBoundary(set)) {
+      const Polygon& p = input.faces[corner.face];
+      region.boundary.push_back({p[corner.corner], p[(corner.corner + 1) % p.size()], corner.face});
     }
     std::map<int, int> cap;
-    for (int f : set) {
-      const Polygon& p = input.faces[f];
-      for (size_t i = 0; i < p.size(); ++i) {
-        const int a = p[i], b = p[(i + 1) % p.size()];
-        if (!directed.count(Directed(b, a))) region.boundary.push_back({a, b, f});
-      }
-    }
     for (const RegionCopy::BoundaryEdge& e : region.boundary) {
       for (int v : {e.a, e.b}) {
         if (!cap.count(v)) cap[v] = next_vertex++;

@@ -8,7 +8,7 @@ $SUDO apt-get update -qq
 $SUDO apt-get install -y -qq \
   build-essential cmake ninja-build ccache pkg-config \
   libceres-dev libeigen3-dev libgflags-dev libgoogle-glog-dev \
-  libosd-dev libcgal-dev libgmp-dev libmpfr-dev libboost-dev \
+  libosd-dev libopenmesh-dev libcgal-dev libgmp-dev libmpfr-dev libboost-dev \
   nlohmann-json3-dev libnanoflann-dev \
   libgtest-dev libgmock-dev libbenchmark-dev \
   blender python3 python3-numpy chromium >/dev/null

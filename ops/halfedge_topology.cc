@@ -1,0 +1,247 @@
+#include "ops/halfedge_topology.h"
+
+#include <OpenMesh/Core/System/omstream.hh>
+
+#include <algorithm>
+#include <deque>
+#include <mutex>
+
+namespace opgraph {
+
+namespace {
+
+// OpenMesh reports each refused face on stderr; a refused face is expected here (it is added
+// on vertex copies), so its reports are switched off once.
+void SilenceOpenMesh() {
+  static std::once_flag once;
+  std::call_once(once, [] { omerr().disable(); });
+}
+
+bool RepeatsAVertex(const Polygon& face) {
+  for (size_t i = 0; i < face.size(); ++i) {
+    for (size_t j = i + 1; j < face.size(); ++j) {
+      if (face[i] == face[j]) return true;
+    }
+  }
+  return false;
+}
+
+// FNV-1a over the vertex count and the face loops.
+size_t HashFaces(const std::vector<Polygon>& faces, int num_vertices) {
+  size_t hash = 14695981039346656037ull ^ static_cast<size_t>(num_vertices);
+  for (const Polygon& face : faces) {
+    for (int v : face) hash = (hash ^ static_cast<size_t>(v)) * 1099511628211ull;
+    hash = (hash ^ 0xffffffffull) * 1099511628211ull;  // face end
+  }
+  return hash;
+}
+
+}  // namespace
+
+std::shared_ptr<const HalfedgeTopology> HalfedgeTopology::Of(const Mesh& mesh) {
+  struct Entry {
+    size_t hash;
+    int num_vertices;
+    std::vector<Polygon> faces;
+    std::shared_ptr<const HalfedgeTopology> topology;
+  };
+  static std::mutex mutex;
+  static std::deque<Entry> cache;  // most recent first
+  const size_t hash = HashFaces(mesh.faces, mesh.NumVertices());
+  {
+    std::lock_guard<std::mutex> lock(mutex);
+    for (const Entry& entry : cache) {
+      if (entry.hash == hash && entry.num_vertices == mesh.NumVertices() && entry.faces == mesh.faces) {
+        return entry.topology;
+      }
+    }
+  }
+  auto topology = std::make_shared<const HalfedgeTopology>(mesh.faces, mesh.NumVertices());
+  std::lock_guard<std::mutex> lock(mutex);
+  cache.push_front({hash, mesh.NumVertices(), mesh.faces, topology});
+  if (cache.size() > kCached) cache.pop_back();
+  return topology;
+}
+
+HalfedgeTopology::HalfedgeTopology(const std::vector<Polygon>& faces, int num_vertices, Winding winding)
+    : num_vertices_(num_vertices) {
+  SilenceOpenMesh();
+  size_t num_corners = 0;
+  for (const Polygon& face : faces) num_corners += face.size();
+  mesh_.reserve(num_vertices, num_corners / 2 + 1, faces.size());
+  for (int v = 0; v < num_vertices; ++v) mesh_.add_vertex();
+  std::vector<VertexHandle> handles;
+  reversed_.assign(faces.size(), false);
+  for (const Polygon& face : faces) AddFace(face, winding, &handles);
+  NumberCornersAndEdges(faces);
+}
+
+// Adds the face if OpenMesh takes it. With kEither, where refusals are common, OpenMesh's first
+// tests (a closed fan at a vertex, an edge whose side is taken) are made here first, sparing
+// OpenMesh's (silenced) report; with kAsGiven a refusal is rare and they would cost time.
+bool HalfedgeTopology::TryAddFace(const std::vector<VertexHandle>& handles, Winding winding) {
+  const size_t n = handles.size();
+  for (size_t i = 0; winding == Winding::kEither && i < n; ++i) {
+    if (!mesh_.is_boundary(handles[i])) return false;
+    const HalfedgeHandle h = mesh_.find_halfedge(handles[i], handles[(i + 1) % n]);
+    if (h.is_valid() && !mesh_.is_boundary(h)) return false;
+  }
+  return mesh_.add_face(handles).is_valid();
+}
+
+// Adds `face` as face mesh_.n_faces(): on its own vertices if OpenMesh takes it (or, with
+// kEither, takes it reversed), else on copies.
+void HalfedgeTopology::AddFace(const Polygon& face, Winding winding, std::vector<VertexHandle>* handles) {
+  handles->clear();
+  for (int v : face) handles->push_back(VertexHandle(v));
+  if (!RepeatsAVertex(face)) {
+    if (TryAddFace(*handles, winding)) return;
+    if (winding == Winding::kEither) {
+      std::reverse(handles->begin(), handles->end());
+      if (TryAddFace(*handles, winding)) {
+        reversed_[mesh_.n_faces() - 1] = any_reversed_ = true;
+        return;
+      }
+      std::reverse(handles->begin(), handles->end());
+    }
+  }
+  if (copies_.empty()) copies_.resize(num_vertices_);
+  for (size_t i = 0; i < face.size(); ++i) {
+    (*handles)[i] = mesh_.add_vertex();
+    copies_[face[i]].push_back((*handles)[i].idx());
+    copy_of_.push_back(face[i]);
+  }
+  mesh_.add_face(*handles);
+}
+
+// Corners from each face's halfedges (OpenMesh's face halfedge runs from the last vertex to the
+// first), and edge numbers: OpenMesh's edge order, copies of one edge sharing its number.
+void HalfedgeTopology::NumberCornersAndEdges(const std::vector<Polygon>& faces) {
+  face_offset_.assign(1, 0);
+  for (const Polygon& face : faces) face_offset_.push_back(face_offset_.back() + static_cast<int>(face.size()));
+  corner_halfedge_.resize(face_offset_.back());
+  halfedge_corner_.assign(mesh_.n_halfedges(), {-1, -1});
+  for (int f = 0; f < static_cast<int>(faces.size()); ++f) {
+    const int n = static_cast<int>(faces[f].size());
+    HalfedgeHandle h = mesh_.next_halfedge_handle(mesh_.halfedge_handle(OpenMesh::FaceHandle(f)));
+    for (int j = 0; j < n; ++j, h = mesh_.next_halfedge_handle(h)) {
+      // Reversed, halfedge j runs face[n - 1 - j] -> face[n - 2 - j]: corner n - 2 - j's edge.
+      const int c = reversed_[f] ? (2 * n - 2 - j) % n : j;
+      corner_halfedge_[face_offset_[f] + c] = h.idx();
+      halfedge_corner_[h.idx()] = {f, c};
+    }
+  }
+  const int num_openmesh_edges = static_cast<int>(mesh_.n_edges());
+  edge_of_openmesh_edge_.resize(num_openmesh_edges);
+  edge_vertices_.clear();
+  edge_vertices_.reserve(num_openmesh_edges);
+  for (int e = 0; e < num_openmesh_edges; ++e) {
+    const HalfedgeHandle h = mesh_.halfedge_handle(OpenMesh::EdgeHandle(e), 0);
+    const int a = Original(mesh_.from_vertex_handle(h)), b = Original(mesh_.to_vertex_handle(h));
+    int earliest = e;  // the first OpenMesh edge joining a and b
+    if (!Manifold()) {
+      ForEachOutgoing(a, [&](HalfedgeHandle g) {
+        if (Original(mesh_.to_vertex_handle(g)) == b) earliest = std::min(earliest, mesh_.edge_handle(g).idx());
+      });
+    }
+    if (earliest < e) {
+      edge_of_openmesh_edge_[e] = edge_of_openmesh_edge_[earliest];
+    } else {
+      edge_of_openmesh_edge_[e] = static_cast<int>(edge_vertices_.size());
+      edge_vertices_.push_back({a, b});
+    }
+  }
+  num_edges_ = static_cast<int>(edge_vertices_.size());
+  corner_edge_.resize(corner_halfedge_.size());
+  for (size_t k = 0; k < corner_halfedge_.size(); ++k) {
+    corner_edge_[k] = edge_of_openmesh_edge_[mesh_.edge_handle(HalfedgeHandle(corner_halfedge_[k])).idx()];
+  }
+}
+
+int HalfedgeTopology::Original(VertexHandle vertex) const {
+  return vertex.idx() < num_vertices_ ? vertex.idx() : copy_of_[vertex.idx() - num_vertices_];
+}
+
+template <typename Visit>
+void HalfedgeTopology::ForEachOutgoing(int v, Visit visit) const {
+  for (auto it = mesh_.cvoh_iter(VertexHandle(v)); it.is_valid(); ++it) visit(*it);
+  if (Manifold()) return;
+  for (int copy : copies_[v]) {
+    for (auto it = mesh_.cvoh_iter(VertexHandle(copy)); it.is_valid(); ++it) visit(*it);
+  }
+}
+
+int HalfedgeTopology::Edge(int a, int b) const {
+  if (Manifold()) {
+    const HalfedgeHandle h = mesh_.find_halfedge(VertexHandle(a), VertexHandle(b));
+    return h.is_valid() ? edge_of_openmesh_edge_[mesh_.edge_handle(h).idx()] : -1;
+  }
+  int edge = -1;
+  ForEachOutgoing(a, [&](HalfedgeHandle h) {
+    if (Original(mesh_.to_vertex_handle(h)) == b) edge = edge_of_openmesh_edge_[mesh_.edge_handle(h).idx()];
+  });
+  return edge;
+}
+
+int HalfedgeTopology::CornerVertex(const Corner& corner) const {
+  const HalfedgeHandle h(corner_halfedge_[face_offset_[corner.face] + corner.corner]);
+  return Original(reversed_[corner.face] ? mesh_.to_vertex_handle(h) : mesh_.from_vertex_handle(h));
+}
+
+HalfedgeTopology::Corners HalfedgeTopology::EdgeCorners(int e) const {
+  Corners corners;
+  auto add = [&](HalfedgeHandle h) {
+    if (halfedge_corner_[h.idx()].face >= 0) corners.push_back(halfedge_corner_[h.idx()]);
+  };
+  const auto [a, b] = edge_vertices_[e];
+  // Each OpenMesh edge joining (copies of) a and b is met once as a halfedge a -> b.
+  ForEachOutgoing(a, [&](HalfedgeHandle h) {
+    if (Original(mesh_.to_vertex_handle(h)) != b) return;
+    add(h);
+    if (a != b) add(mesh_.opposite_halfedge_handle(h));
+  });
+  std::sort(corners.begin(), corners.end());
+  return corners;
+}
+
+HalfedgeTopology::Corners HalfedgeTopology::VertexCorners(int v) const {
+  Corners corners;
+  ForEachOutgoing(v, [&](HalfedgeHandle h) {
+    Corner corner = halfedge_corner_[h.idx()];
+    if (corner.face < 0) return;
+    // A reversed face's halfedge leaving v is the corner ending at v.
+    const int n = face_offset_[corner.face + 1] - face_offset_[corner.face];
+    if (reversed_[corner.face]) corner.corner = (corner.corner + 1) % n;
+    corners.push_back(corner);
+  });
+  std::sort(corners.begin(), corners.end());
+  return corners;
+}
+
+std::vector<HalfedgeTopology::Corner> HalfedgeTopology::RegionBoundary(const std::vector<int>& region) const {
+  // Sorted, not a mask over all faces: Extrude "individual" asks once per face.
+  std::vector<int> sorted = region;
+  std::sort(sorted.begin(), sorted.end());
+  auto in_region = [&](int f) { return std::binary_search(sorted.begin(), sorted.end(), f); };
+  std::vector<Corner> boundary;
+  for (int f : region) {
+    for (int c = 0; c < face_offset_[f + 1] - face_offset_[f]; ++c) {
+      bool reversed = false;  // run b -> a by a face of the region
+      if (Manifold() && !any_reversed_) {
+        // The edge's only other corner is across its halfedge, and runs the other way.
+        const HalfedgeHandle h(corner_halfedge_[face_offset_[f] + c]);
+        const int other = halfedge_corner_[mesh_.opposite_halfedge_handle(h).idx()].face;
+        reversed = other >= 0 && in_region(other);
+      } else {
+        const int from = CornerVertex({f, c});
+        for (const Corner& other : EdgeCorners(CornerEdge(f, c))) {
+          reversed = reversed || (in_region(other.face) && CornerVertex(other) != from);
+        }
+      }
+      if (!reversed) boundary.push_back({f, c});
+    }
+  }
+  return boundary;
+}
+
+}  // namespace opgraph
