@@ -1,17 +1,16 @@
 // Embedding opgraph in a reconstruction pipeline: a PCL point cloud in memory in, a design
-// sequence out. Here the cloud is a scan-like sampling of a box with a boss on top (in a
-// pipeline it comes from your scanner or reconstruction); pass a .pcd path to use your own.
+// sequence out, through the entry header api/opgraph.h. Here the cloud is a scan-like sampling of
+// a box with a boss on top (in a pipeline it comes from your scanner or reconstruction); pass a
+// .pcd path to use your own.
 //
 //   build/embed_point_cloud [cloud.pcd] [out_dir]
+#include <pcl/common/point_tests.h>
 #include <pcl/io/pcd_io.h>
 
 #include <iostream>
 #include <random>
 
-#include "io/pcl_cloud.h"
-#include "io/sequence_outputs.h"
-#include "solver/target.h"
-#include "search/zero_shot.h"
+#include "api/opgraph.h"
 
 int main(int argc, char** argv) {
   pcl::PointCloud<pcl::PointXYZ> cloud;
@@ -47,19 +46,27 @@ int main(int argc, char** argv) {
     }
   }
 
-  opgraph::InputGeometry input = opgraph::InputFromPclCloud(cloud);
-  opgraph::TargetOptions target_options;
-  const opgraph::Target target(input.mesh, input.normals, target_options);  // normals estimated if absent
-  opgraph::ZeroShotOptions options;
+  // #P by 3, the finite points (a scan's cloud may hold NaNs); no normals: they are estimated.
+  Eigen::MatrixX3d points(cloud.size(), 3);
+  Eigen::Index count = 0;
+  for (const pcl::PointXYZ& p : cloud) {
+    if (pcl::isFinite(p)) points.row(count++) << p.x, p.y, p.z;
+  }
+  points.conservativeResize(count, 3);
+  const opgraph::api::Target target = opgraph::api::Target::FromPoints(points);
+  opgraph::api::RecoverOptions options;
   options.work_budget = 60000;  // a short search (the default is 500,000 work units)
-  options.progress = &std::cout;
-  const opgraph::ZeroShotResult result = opgraph::RecoverSequence(target, options);
+  options.on_progress = [](const opgraph::api::Progress& progress) {
+    if (!progress.decision.empty()) std::cout << progress.decision << "\n";
+    return true;
+  };
+  const opgraph::api::RecoverResult result = opgraph::api::RecoverSequence(target, options);
 
-  std::cout << result.sequence.dump(1) << "\n";
+  std::cout << result.sequence_json;
   if (argc > 2) {
-    opgraph::Sequence sequence = opgraph::ParseSequence(result.sequence);
-    opgraph::WriteSequenceOutputs(opgraph::RenderSequenceOutputs(&sequence), argv[2], /*write_steps=*/true,
-                                  "opgraph embed_point_cloud result");
+    opgraph::api::WriteOptions write;
+    write.comment = "opgraph embed_point_cloud result";
+    opgraph::api::WriteOutputs(result.sequence_json, argv[2], write);
   }
   return 0;
 }

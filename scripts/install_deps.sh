@@ -11,6 +11,7 @@ $SUDO apt-get install -y -qq \
   libosd-dev libopenmesh-dev libcgal-dev libgmp-dev libmpfr-dev libboost-dev \
   nlohmann-json3-dev libnanoflann-dev \
   libgtest-dev libgmock-dev libbenchmark-dev \
-  blender python3 python3-numpy chromium >/dev/null
+  blender python3 python3-numpy chromium \
+  pybind11-dev python3-pybind11 python3-dev >/dev/null
 # Input formats: Assimp for meshes, PCL for point clouds (their recommends pull VTK and Qt, unused).
 $SUDO apt-get install -y -qq --no-install-recommends libassimp-dev libpcl-dev >/dev/null

@@ -41,6 +41,7 @@ output=$("$consumer/opgraph_consumer" "$source_dir/examples/barrel.obj" "$work_d
 echo "$output"
 grep -qx 'sequence: 5 operations' <<<"$output" || fail "expected 5 operations"
 grep -qE '^result: [1-9][0-9]* vertices, [1-9][0-9]* faces$' <<<"$output" || fail "expected a result mesh"
+grep -qE '^recovered: [1-9][0-9]* operations' <<<"$output" || fail "expected a recovered sequence"
 for file in result.obj result.glb sequence.json rebuild_blender.py steps/04_Subdivision.obj; do
   [ -s "$work_dir/out/$file" ] || fail "missing output $file"
 done
