@@ -2,7 +2,6 @@
 
 #include <Eigen/Dense>
 #include <algorithm>
-#include <deque>
 #include <limits>
 
 #include "core/geometry.h"
@@ -464,33 +463,7 @@ void BevelOp::Prepare(const Mesh& input) {
   }
   // Orient new faces against their already oriented neighbours (breadth first from the
   // rebuilt originals, whose winding is the input's).
-  const HalfedgeTopology users(output_faces_, num_output_vertices_, HalfedgeTopology::Winding::kEither);
-  std::vector<bool> oriented(output_faces_.size(), false);
-  std::deque<int> queue;
-  for (size_t f = 0; f < num_rebuilt; ++f) {
-    oriented[f] = true;
-    queue.push_back(static_cast<int>(f));
-  }
-  while (!queue.empty()) {
-    const int f = queue.front();
-    queue.pop_front();
-    const Polygon face = output_faces_[f];
-    for (size_t c = 0; c < face.size(); ++c) {
-      const int a = face[c], b = face[(c + 1) % face.size()];
-      for (const auto& [g, corner] : users.EdgeCorners(users.Edge(a, b))) {
-        if (oriented[g]) continue;
-        Polygon& other = output_faces_[g];
-        for (size_t d = 0; d < other.size(); ++d) {
-          if (other[d] == a && other[(d + 1) % other.size()] == b) {
-            std::reverse(other.begin(), other.end());
-            break;
-          }
-        }
-        oriented[g] = true;
-        queue.push_back(g);
-      }
-    }
-  }
+  OrientAgainstNeighbours(static_cast<int>(num_rebuilt), &output_faces_);
 }
 
 Json BevelOp::ParamsToJson() const {

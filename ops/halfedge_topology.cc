@@ -5,6 +5,7 @@
 #include <algorithm>
 #include <deque>
 #include <mutex>
+#include <tuple>
 
 namespace opgraph {
 
@@ -242,6 +243,50 @@ std::vector<HalfedgeTopology::Corner> HalfedgeTopology::RegionBoundary(const std
     }
   }
   return boundary;
+}
+
+void OrientAgainstNeighbours(int num_oriented, std::vector<Polygon>* faces) {
+  // The undirected edges of the faces to orient, sorted, so a shared edge's faces are one range.
+  struct EdgeUse {
+    int low, high, face;
+    bool operator<(const EdgeUse& o) const { return std::tie(low, high, face) < std::tie(o.low, o.high, o.face); }
+  };
+  const int num_faces = static_cast<int>(faces->size());
+  std::vector<EdgeUse> uses;
+  for (int f = num_oriented; f < num_faces; ++f) {
+    const Polygon& face = (*faces)[f];
+    for (size_t c = 0; c < face.size(); ++c) {
+      const int a = face[c], b = face[(c + 1) % face.size()];
+      uses.push_back({std::min(a, b), std::max(a, b), f});
+    }
+  }
+  std::sort(uses.begin(), uses.end());
+  std::vector<bool> oriented(num_faces, false);
+  std::vector<int> queue;  // breadth first: faces in the order they were oriented
+  for (int f = 0; f < num_oriented; ++f) {
+    oriented[f] = true;
+    queue.push_back(f);
+  }
+  for (size_t next = 0; next < queue.size(); ++next) {
+    const Polygon& face = (*faces)[queue[next]];  // never reversed again, so the reference holds
+    for (size_t c = 0; c < face.size(); ++c) {
+      const int a = face[c], b = face[(c + 1) % face.size()];
+      const EdgeUse first = {std::min(a, b), std::max(a, b), -1};
+      for (auto use = std::lower_bound(uses.begin(), uses.end(), first);
+           use != uses.end() && use->low == first.low && use->high == first.high; ++use) {
+        if (oriented[use->face]) continue;
+        Polygon& other = (*faces)[use->face];
+        for (size_t d = 0; d < other.size(); ++d) {
+          if (other[d] == a && other[(d + 1) % other.size()] == b) {
+            std::reverse(other.begin(), other.end());
+            break;
+          }
+        }
+        oriented[use->face] = true;
+        queue.push_back(use->face);
+      }
+    }
+  }
 }
 
 }  // namespace opgraph
