@@ -27,39 +27,27 @@ bool RepeatsAVertex(const Polygon& face) {
   return false;
 }
 
-// FNV-1a over the vertex count and the face loops.
-size_t HashFaces(const std::vector<Polygon>& faces, int num_vertices) {
-  size_t hash = 14695981039346656037ull ^ static_cast<size_t>(num_vertices);
-  for (const Polygon& face : faces) {
-    for (int v : face) hash = (hash ^ static_cast<size_t>(v)) * 1099511628211ull;
-    hash = (hash ^ 0xffffffffull) * 1099511628211ull;  // face end
-  }
-  return hash;
-}
-
 }  // namespace
 
 std::shared_ptr<const HalfedgeTopology> HalfedgeTopology::Of(const Mesh& mesh) {
   struct Entry {
-    size_t hash;
     int num_vertices;
     std::vector<Polygon> faces;
     std::shared_ptr<const HalfedgeTopology> topology;
   };
   static std::mutex mutex;
   static std::deque<Entry> cache;  // most recent first
-  const size_t hash = HashFaces(mesh.faces, mesh.NumVertices());
   {
+    // A plain comparison, no hash: a hit reads the face list once (a hash would read it again),
+    // and a miss mostly stops at the first differing face, then costs a build anyway.
     std::lock_guard<std::mutex> lock(mutex);
     for (const Entry& entry : cache) {
-      if (entry.hash == hash && entry.num_vertices == mesh.NumVertices() && entry.faces == mesh.faces) {
-        return entry.topology;
-      }
+      if (entry.num_vertices == mesh.NumVertices() && entry.faces == mesh.faces) return entry.topology;
     }
   }
   auto topology = std::make_shared<const HalfedgeTopology>(mesh.faces, mesh.NumVertices());
   std::lock_guard<std::mutex> lock(mutex);
-  cache.push_front({hash, mesh.NumVertices(), mesh.faces, topology});
+  cache.push_front({mesh.NumVertices(), mesh.faces, topology});
   if (cache.size() > kCached) cache.pop_back();
   return topology;
 }
@@ -220,10 +208,18 @@ HalfedgeTopology::Corners HalfedgeTopology::VertexCorners(int v) const {
 }
 
 std::vector<HalfedgeTopology::Corner> HalfedgeTopology::RegionBoundary(const std::vector<int>& region) const {
-  // Sorted, not a mask over all faces: Extrude "individual" asks once per face.
-  std::vector<int> sorted = region;
-  std::sort(sorted.begin(), sorted.end());
-  auto in_region = [&](int f) { return std::binary_search(sorted.begin(), sorted.end(), f); };
+  // Not a mask over all faces: Extrude "individual" asks once per face. A small region is
+  // searched as it is, a larger one sorted.
+  constexpr size_t kSmallRegion = 8;
+  std::vector<int> sorted;
+  if (region.size() > kSmallRegion) {
+    sorted = region;
+    std::sort(sorted.begin(), sorted.end());
+  }
+  auto in_region = [&](int f) {
+    return sorted.empty() ? std::find(region.begin(), region.end(), f) != region.end()
+                          : std::binary_search(sorted.begin(), sorted.end(), f);
+  };
   std::vector<Corner> boundary;
   for (int f : region) {
     for (int c = 0; c < face_offset_[f + 1] - face_offset_[f]; ++c) {
