@@ -52,7 +52,7 @@ std::shared_ptr<const HalfedgeTopology> HalfedgeTopology::Of(const Mesh& mesh) {
   return topology;
 }
 
-HalfedgeTopology::HalfedgeTopology(const std::vector<Polygon>& faces, int num_vertices, Winding winding)
+HalfedgeTopology::HalfedgeTopology(const std::vector<Polygon>& faces, int num_vertices)
     : num_vertices_(num_vertices) {
   SilenceOpenMesh();
   size_t num_corners = 0;
@@ -60,40 +60,15 @@ HalfedgeTopology::HalfedgeTopology(const std::vector<Polygon>& faces, int num_ve
   mesh_.reserve(num_vertices, num_corners / 2 + 1, faces.size());
   for (int v = 0; v < num_vertices; ++v) mesh_.add_vertex();
   std::vector<VertexHandle> handles;
-  reversed_.assign(faces.size(), false);
-  for (const Polygon& face : faces) AddFace(face, winding, &handles);
+  for (const Polygon& face : faces) AddFace(face, &handles);
   NumberCornersAndEdges(faces);
 }
 
-// Adds the face if OpenMesh takes it. With kEither, where refusals are common, OpenMesh's first
-// tests (a closed fan at a vertex, an edge whose side is taken) are made here first, sparing
-// OpenMesh's (silenced) report; with kAsGiven a refusal is rare and they would cost time.
-bool HalfedgeTopology::TryAddFace(const std::vector<VertexHandle>& handles, Winding winding) {
-  const size_t n = handles.size();
-  for (size_t i = 0; winding == Winding::kEither && i < n; ++i) {
-    if (!mesh_.is_boundary(handles[i])) return false;
-    const HalfedgeHandle h = mesh_.find_halfedge(handles[i], handles[(i + 1) % n]);
-    if (h.is_valid() && !mesh_.is_boundary(h)) return false;
-  }
-  return mesh_.add_face(handles).is_valid();
-}
-
-// Adds `face` as face mesh_.n_faces(): on its own vertices if OpenMesh takes it (or, with
-// kEither, takes it reversed), else on copies.
-void HalfedgeTopology::AddFace(const Polygon& face, Winding winding, std::vector<VertexHandle>* handles) {
+// Adds `face` as face mesh_.n_faces(): on its own vertices if OpenMesh takes it, else on copies.
+void HalfedgeTopology::AddFace(const Polygon& face, std::vector<VertexHandle>* handles) {
   handles->clear();
   for (int v : face) handles->push_back(VertexHandle(v));
-  if (!RepeatsAVertex(face)) {
-    if (TryAddFace(*handles, winding)) return;
-    if (winding == Winding::kEither) {
-      std::reverse(handles->begin(), handles->end());
-      if (TryAddFace(*handles, winding)) {
-        reversed_[mesh_.n_faces() - 1] = any_reversed_ = true;
-        return;
-      }
-      std::reverse(handles->begin(), handles->end());
-    }
-  }
+  if (!RepeatsAVertex(face) && mesh_.add_face(*handles).is_valid()) return;
   if (copies_.empty()) copies_.resize(num_vertices_);
   for (size_t i = 0; i < face.size(); ++i) {
     (*handles)[i] = mesh_.add_vertex();
@@ -114,10 +89,8 @@ void HalfedgeTopology::NumberCornersAndEdges(const std::vector<Polygon>& faces) 
     const int n = static_cast<int>(faces[f].size());
     HalfedgeHandle h = mesh_.next_halfedge_handle(mesh_.halfedge_handle(OpenMesh::FaceHandle(f)));
     for (int j = 0; j < n; ++j, h = mesh_.next_halfedge_handle(h)) {
-      // Reversed, halfedge j runs face[n - 1 - j] -> face[n - 2 - j]: corner n - 2 - j's edge.
-      const int c = reversed_[f] ? (2 * n - 2 - j) % n : j;
-      corner_halfedge_[face_offset_[f] + c] = h.idx();
-      halfedge_corner_[h.idx()] = {f, c};
+      corner_halfedge_[face_offset_[f] + j] = h.idx();
+      halfedge_corner_[h.idx()] = {f, j};
     }
   }
   const int num_openmesh_edges = static_cast<int>(mesh_.n_edges());
@@ -174,7 +147,7 @@ int HalfedgeTopology::Edge(int a, int b) const {
 
 int HalfedgeTopology::CornerVertex(const Corner& corner) const {
   const HalfedgeHandle h(corner_halfedge_[face_offset_[corner.face] + corner.corner]);
-  return Original(reversed_[corner.face] ? mesh_.to_vertex_handle(h) : mesh_.from_vertex_handle(h));
+  return Original(mesh_.from_vertex_handle(h));
 }
 
 HalfedgeTopology::Corners HalfedgeTopology::EdgeCorners(int e) const {
@@ -196,12 +169,7 @@ HalfedgeTopology::Corners HalfedgeTopology::EdgeCorners(int e) const {
 HalfedgeTopology::Corners HalfedgeTopology::VertexCorners(int v) const {
   Corners corners;
   ForEachOutgoing(v, [&](HalfedgeHandle h) {
-    Corner corner = halfedge_corner_[h.idx()];
-    if (corner.face < 0) return;
-    // A reversed face's halfedge leaving v is the corner ending at v.
-    const int n = face_offset_[corner.face + 1] - face_offset_[corner.face];
-    if (reversed_[corner.face]) corner.corner = (corner.corner + 1) % n;
-    corners.push_back(corner);
+    if (halfedge_corner_[h.idx()].face >= 0) corners.push_back(halfedge_corner_[h.idx()]);
   });
   std::sort(corners.begin(), corners.end());
   return corners;
@@ -224,7 +192,7 @@ std::vector<HalfedgeTopology::Corner> HalfedgeTopology::RegionBoundary(const std
   for (int f : region) {
     for (int c = 0; c < face_offset_[f + 1] - face_offset_[f]; ++c) {
       bool reversed = false;  // run b -> a by a face of the region
-      if (Manifold() && !any_reversed_) {
+      if (Manifold()) {
         // The edge's only other corner is across its halfedge, and runs the other way.
         const HalfedgeHandle h(corner_halfedge_[face_offset_[f] + c]);
         const int other = halfedge_corner_[mesh_.opposite_halfedge_handle(h).idx()].face;

@@ -34,14 +34,8 @@ class HalfedgeTopology {
   // The corners of an edge or at a vertex: two, or a handful, without a heap allocation.
   using Corners = boost::container::small_vector<Corner, 6>;
 
-  // How faces are taken. kEither: for a face list whose winding is still to be made consistent
-  // (Bevel's new faces): a face OpenMesh refuses is tried reversed before it goes on copies.
-  // Edge and corner queries answer as for kAsGiven, but edge numbers and directions follow the
-  // faces as OpenMesh took them, and RegionBoundary is meaningless.
-  enum class Winding { kAsGiven, kEither };
-
   // `faces` index vertices 0 .. num_vertices - 1 (#F loops of at least 3).
-  HalfedgeTopology(const std::vector<Polygon>& faces, int num_vertices, Winding winding = Winding::kAsGiven);
+  HalfedgeTopology(const std::vector<Polygon>& faces, int num_vertices);
   // The half-edge mesh of `mesh`'s faces, built once per distinct face list: a search prepares
   // many ops (every choice it tries) on one mesh, and building costs more than most topology
   // passes. The last kCached face lists are kept (thread-safe).
@@ -81,16 +75,13 @@ class HalfedgeTopology {
   // Calls visit(halfedge) for each OpenMesh halfedge leaving v or one of its copies.
   template <typename Visit>
   void ForEachOutgoing(int v, Visit visit) const;
-  bool TryAddFace(const std::vector<VertexHandle>& handles, Winding winding);
-  void AddFace(const Polygon& face, Winding winding, std::vector<VertexHandle>* handles);
+  void AddFace(const Polygon& face, std::vector<VertexHandle>* handles);
   void NumberCornersAndEdges(const std::vector<Polygon>& faces);
 
   OpenMesh::PolyConnectivity mesh_;
   int num_vertices_ = 0;
   std::vector<int> copy_of_;                 // OpenMesh vertex num_vertices_ + k copies copy_of_[k]
   std::vector<std::vector<int>> copies_;     // input vertex -> its copies (empty when Manifold())
-  std::vector<bool> reversed_;               // face f was taken reversed (Winding::kEither)
-  bool any_reversed_ = false;
   std::vector<int> face_offset_;             // #F + 1: face f's corners are face_offset_[f] ...
   std::vector<int> corner_halfedge_;         // flat corner -> OpenMesh halfedge
   std::vector<Corner> halfedge_corner_;      // OpenMesh halfedge -> corner ({-1, -1}: boundary)
