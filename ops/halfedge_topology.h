@@ -95,7 +95,7 @@ class HalfedgeTopology {
 // reached the other way from the face reaching it: breadth first from faces 0 .. num_oriented - 1,
 // whose winding is kept, faces by index and their edges by corner. A face no chain reaches keeps
 // its winding. For Bevel's new faces against the rebuilt originals: only the faces to orient are
-// indexed (a sorted list of their edges), far cheaper than a half-edge mesh of all the faces.
+// indexed (their edges listed by lower vertex), far cheaper than a half-edge mesh of all faces.
 void OrientAgainstNeighbours(int num_oriented, std::vector<Polygon>* faces);
 
 }  // namespace opgraph
