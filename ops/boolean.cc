@@ -4,10 +4,10 @@
 #include <cstdio>
 #include <map>
 #include <numeric>
-#include <set>
 
 #include "core/geometry.h"
 #include "ops/boolean_cgal.h"
+#include "ops/halfedge_topology.h"
 
 namespace opgraph {
 namespace {
@@ -59,28 +59,44 @@ int DominantAxis(const Vec3d& a, const Vec3d& b, const Vec3d& c) {
   return axis;
 }
 
+// An edge of a triangle list with a triangle on each side: `left` runs from -> to, `right`
+// to -> from (from < to).
+struct TwoSidedEdge {
+  int from, to;
+  int left, right;
+};
+
+// The two-sided edges of `triangles`, by (from, to): the order the flips and merges below try
+// them in (where a flip or a merge blocks the next one, the order decides the result).
+std::vector<TwoSidedEdge> TwoSidedEdges(const std::vector<std::array<int, 3>>& triangles, int num_vertices) {
+  const HalfedgeTopology topology(triangles, num_vertices);
+  std::vector<TwoSidedEdge> edges;
+  for (int e = 0; e < topology.NumEdges(); ++e) {
+    const auto [a, b] = topology.EdgeVertices(e);
+    const int from = std::min(a, b), to = std::max(a, b);
+    const int left = topology.EdgeFace(from, to), right = topology.EdgeFace(to, from);
+    if (left >= 0 && right >= 0) edges.push_back({from, to, left, right});
+  }
+  std::sort(edges.begin(), edges.end(), [](const TwoSidedEdge& x, const TwoSidedEdge& y) {
+    return x.from != y.from ? x.from < y.from : x.to < y.to;
+  });
+  return edges;
+}
+
 // Flips edges between triangles of the same group (>= 0) until each is locally Delaunay in the
 // projection of triangle t along coordinate axis[t]: the constrained Delaunay triangulation of
 // each group, with the group's outline as constraints. A cocircular tie is never flipped.
 void DelaunayFlips(const Positions<double>& vertices, const std::vector<int>& group, const std::vector<int>& axis,
                    std::vector<std::array<int, 3>>* triangles) {
-  if (vertices.empty()) return;
+  if (vertices.empty() || std::all_of(group.begin(), group.end(), [](int g) { return g < 0; })) return;
   Vec3d lo = vertices[0], hi = vertices[0];
   for (const Vec3d& v : vertices) lo = lo.cwiseMin(v), hi = hi.cwiseMax(v);
   const double tie = 1e-12 * std::pow((hi - lo).norm(), 4);
   for (int pass = 0; pass < 1000; ++pass) {
-    std::map<std::pair<int, int>, int> triangle_of_edge;  // directed edge -> triangle
-    for (size_t t = 0; t < triangles->size(); ++t) {
-      const auto& c = (*triangles)[t];
-      for (int i = 0; i < 3; ++i) triangle_of_edge[{c[i], c[(i + 1) % 3]}] = static_cast<int>(t);
-    }
     std::vector<bool> touched(triangles->size(), false);
     bool flipped = false;
-    for (const auto& e : triangle_of_edge) {
-      const int u = e.first.first, v = e.first.second;
-      const auto twin = triangle_of_edge.find({v, u});
-      if (u > v || twin == triangle_of_edge.end()) continue;
-      const int left = e.second, right = twin->second;
+    for (const TwoSidedEdge& e : TwoSidedEdges(*triangles, static_cast<int>(vertices.size()))) {
+      const int u = e.from, v = e.to, left = e.left, right = e.right;
       if (group[left] < 0 || group[left] != group[right] || touched[left] || touched[right]) continue;
       auto third = [&](int t) {
         for (int c : (*triangles)[t]) {
@@ -371,16 +387,8 @@ Vec3<T> BooleanOp::PrimitiveVertex(const T* p, const Eigen::Matrix<T, 3, 3>& rot
 void BooleanOp::Prepare(const Mesh& input) {
   input_faces_ = input.faces;
   if (input.faces.empty()) throw FieldError("operation", "the input mesh has no faces");
-  // A closed manifold has each directed edge once and its reverse once.
-  std::map<std::pair<int, int>, int> directed;
-  for (const Polygon& f : input.faces) {
-    for (size_t i = 0; i < f.size(); ++i) ++directed[{f[i], f[(i + 1) % f.size()]}];
-  }
-  for (const auto& e : directed) {
-    const auto reverse = directed.find({e.first.second, e.first.first});
-    if (e.second != 1 || reverse == directed.end() || reverse->second != 1) {
-      throw FieldError("operation", "the input mesh is not a closed, consistently oriented manifold");
-    }
+  if (!HalfedgeTopology::Of(input)->Closed()) {
+    throw FieldError("operation", "the input mesh is not a closed, consistently oriented manifold");
   }
 
   // Both operands as triangle soups; the primitive's vertices follow the input's.
@@ -407,14 +415,13 @@ void BooleanOp::Prepare(const Mesh& input) {
   for (const Vec3d& v : b.vertices) lo = lo.cwiseMin(v), hi = hi.cwiseMax(v);
   const double tolerance = 1e-9 * std::max((hi - lo).norm(), 1e-12);
   const TriangleSoup* operands[2] = {&a, &b};
-  std::vector<std::pair<int, int>> edges[2];  // unique triangulation edges of each operand
+  // The triangulation edges of each operand (lower vertex first, as crossings record them).
+  std::vector<std::pair<int, int>> edges[2];
   for (int m = 0; m < 2; ++m) {
-    std::set<std::pair<int, int>> seen;
-    for (const auto& t : operands[m]->triangles) {
-      for (int i = 0; i < 3; ++i) {
-        const std::pair<int, int> e = std::minmax(t[i], t[(i + 1) % 3]);
-        if (seen.insert(e).second) edges[m].push_back(e);
-      }
+    const HalfedgeTopology topology(operands[m]->triangles, static_cast<int>(operands[m]->vertices.size()));
+    for (int e = 0; e < topology.NumEdges(); ++e) {
+      const auto [from, to] = topology.EdgeVertices(e);
+      edges[m].push_back({std::min(from, to), std::max(from, to)});
     }
   }
   // Only edges and triangles within the other operand's bounding box can take part in crossings.
@@ -600,23 +607,16 @@ void BooleanOp::Prepare(const Mesh& input) {
     while (parent[x] != x) x = parent[x] = parent[parent[x]];
     return x;
   };
-  std::map<std::pair<int, int>, int> triangle_of_edge;  // directed edge -> result triangle
-  for (int r = 0; r < num_result_triangles; ++r) {
-    for (int i = 0; i < 3; ++i) triangle_of_edge[{result.triangles[r][i], result.triangles[r][(i + 1) % 3]}] = r;
-  }
   struct Candidate {
     double length_squared;
     int from, to;  // directed edge of triangle `left`
     int left, right;
   };
   std::vector<Candidate> candidates;
-  for (const auto& e : triangle_of_edge) {
-    const auto twin = triangle_of_edge.find({e.first.second, e.first.first});
-    if (e.first.first > e.first.second || twin == triangle_of_edge.end()) continue;
-    const int left = e.second, right = twin->second;
-    if (source_face[left] != source_face[right]) continue;
-    const double length_squared = (result.vertices[e.first.first] - result.vertices[e.first.second]).squaredNorm();
-    candidates.push_back({length_squared, e.first.first, e.first.second, left, right});
+  for (const TwoSidedEdge& e : TwoSidedEdges(result.triangles, static_cast<int>(result.vertices.size()))) {
+    if (source_face[e.left] != source_face[e.right]) continue;
+    const double length_squared = (result.vertices[e.from] - result.vertices[e.to]).squaredNorm();
+    candidates.push_back({length_squared, e.from, e.to, e.left, e.right});
   }
   std::stable_sort(candidates.begin(), candidates.end(), [](const Candidate& x, const Candidate& y) {
     return x.length_squared > y.length_squared;
@@ -654,25 +654,26 @@ void BooleanOp::Prepare(const Mesh& input) {
     merged.push_back(f);
   }
   const int num_result = static_cast<int>(result.vertices.size());
-  std::vector<std::pair<int, int>> neighbours(num_result, {-1, -1});
-  std::vector<bool> dissolve(num_result);
-  for (int v = 0; v < num_result; ++v) dissolve[v] = sources[v].kind == Source::kCrossing;
-  for (const Polygon& f : merged) {
-    const int k = static_cast<int>(f.size());
-    for (int i = 0; i < k; ++i) {
-      const int v = f[i];
-      const std::pair<int, int> around = std::minmax(f[(i + k - 1) % k], f[(i + 1) % k]);
-      if (neighbours[v].first < 0) neighbours[v] = around;
-      else if (neighbours[v] != around) dissolve[v] = false;
-    }
-  }
+  const HalfedgeTopology merged_topology(merged, num_result);
+  std::vector<bool> dissolve(num_result, false);
   for (int v = 0; v < num_result; ++v) {
-    if (!dissolve[v] || neighbours[v].first < 0) continue;
+    if (sources[v].kind != Source::kCrossing) continue;
+    // The same two neighbours in every polygon around v (at least one).
+    std::pair<int, int> neighbours = {-1, -1};
+    bool same = true;
+    for (const HalfedgeTopology::Corner& corner : merged_topology.VertexCorners(v)) {
+      const Polygon& f = merged[corner.face];
+      const int k = static_cast<int>(f.size());
+      const std::pair<int, int> around = std::minmax(f[(corner.corner + k - 1) % k], f[(corner.corner + 1) % k]);
+      if (neighbours.first < 0) neighbours = around;
+      else same = same && around == neighbours;
+    }
+    if (!same || neighbours.first < 0) continue;
     // Only a straight continuation (Blender's test: the turn's cosine within 1e-4 of 1); a
     // crossing where the chain bends, as across the diagonal of a non-planar quad, is kept.
     const Vec3d& p = result.vertices[v];
-    const Vec3d in = p - result.vertices[neighbours[v].first];
-    const Vec3d out = result.vertices[neighbours[v].second] - p;
+    const Vec3d in = p - result.vertices[neighbours.first];
+    const Vec3d out = result.vertices[neighbours.second] - p;
     const double cosine = in.dot(out) / std::max(in.norm() * out.norm(), 1e-300);
     dissolve[v] = cosine > 1 - 1e-4;
   }
