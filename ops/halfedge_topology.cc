@@ -17,7 +17,8 @@ void SilenceOpenMesh() {
   std::call_once(once, [] { omerr().disable(); });
 }
 
-bool RepeatsAVertex(const Polygon& face) {
+template <typename Face>
+bool RepeatsAVertex(const Face& face) {
   for (size_t i = 0; i < face.size(); ++i) {
     for (size_t j = i + 1; j < face.size(); ++j) {
       if (face[i] == face[j]) return true;
@@ -65,14 +66,24 @@ std::shared_ptr<const HalfedgeTopology> HalfedgeTopology::Of(const Mesh& mesh) {
 
 HalfedgeTopology::HalfedgeTopology(const std::vector<Polygon>& faces, int num_vertices, Winding winding)
     : num_vertices_(num_vertices) {
+  Build(faces, winding);
+}
+
+HalfedgeTopology::HalfedgeTopology(const std::vector<std::array<int, 3>>& triangles, int num_vertices)
+    : num_vertices_(num_vertices) {
+  Build(triangles, Winding::kAsGiven);
+}
+
+template <typename Faces>
+void HalfedgeTopology::Build(const Faces& faces, Winding winding) {
   SilenceOpenMesh();
   size_t num_corners = 0;
-  for (const Polygon& face : faces) num_corners += face.size();
-  mesh_.reserve(num_vertices, num_corners / 2 + 1, faces.size());
-  for (int v = 0; v < num_vertices; ++v) mesh_.add_vertex();
+  for (const auto& face : faces) num_corners += face.size();
+  mesh_.reserve(num_vertices_, num_corners / 2 + 1, faces.size());
+  for (int v = 0; v < num_vertices_; ++v) mesh_.add_vertex();
   std::vector<VertexHandle> handles;
   reversed_.assign(faces.size(), false);
-  for (const Polygon& face : faces) AddFace(face, winding, &handles);
+  for (const auto& face : faces) AddFace(face, winding, &handles);
   NumberCornersAndEdges(faces);
 }
 
@@ -91,7 +102,8 @@ bool HalfedgeTopology::TryAddFace(const std::vector<VertexHandle>& handles, Wind
 
 // Adds `face` as face mesh_.n_faces(): on its own vertices if OpenMesh takes it (or, with
 // kEither, takes it reversed), else on copies.
-void HalfedgeTopology::AddFace(const Polygon& face, Winding winding, std::vector<VertexHandle>* handles) {
+template <typename Face>
+void HalfedgeTopology::AddFace(const Face& face, Winding winding, std::vector<VertexHandle>* handles) {
   handles->clear();
   for (int v : face) handles->push_back(VertexHandle(v));
   if (!RepeatsAVertex(face)) {
@@ -116,9 +128,10 @@ void HalfedgeTopology::AddFace(const Polygon& face, Winding winding, std::vector
 
 // Corners from each face's halfedges (OpenMesh's face halfedge runs from the last vertex to the
 // first), and edge numbers: OpenMesh's edge order, copies of one edge sharing its number.
-void HalfedgeTopology::NumberCornersAndEdges(const std::vector<Polygon>& faces) {
+template <typename Faces>
+void HalfedgeTopology::NumberCornersAndEdges(const Faces& faces) {
   face_offset_.assign(1, 0);
-  for (const Polygon& face : faces) face_offset_.push_back(face_offset_.back() + static_cast<int>(face.size()));
+  for (const auto& face : faces) face_offset_.push_back(face_offset_.back() + static_cast<int>(face.size()));
   corner_halfedge_.resize(face_offset_.back());
   halfedge_corner_.assign(mesh_.n_halfedges(), {-1, -1});
   for (int f = 0; f < static_cast<int>(faces.size()); ++f) {
@@ -181,6 +194,36 @@ int HalfedgeTopology::Edge(int a, int b) const {
     if (Original(mesh_.to_vertex_handle(h)) == b) edge = edge_of_openmesh_edge_[mesh_.edge_handle(h).idx()];
   });
   return edge;
+}
+
+int HalfedgeTopology::EdgeFace(int from, int to) const {
+  if (Manifold() && !any_reversed_) {
+    const HalfedgeHandle h = mesh_.find_halfedge(VertexHandle(from), VertexHandle(to));
+    return h.is_valid() ? halfedge_corner_[h.idx()].face : -1;
+  }
+  const int e = Edge(from, to);
+  if (e < 0) return -1;
+  int face = -1;
+  for (const Corner& corner : EdgeCorners(e)) {  // by face: the last one wins
+    if (CornerVertex(corner) == from) face = corner.face;
+  }
+  return face;
+}
+
+bool HalfedgeTopology::Closed() const {
+  if (Manifold() && !any_reversed_) {
+    // Every edge then has at most two corners, running opposite ways: closed when no halfedge
+    // lies on a boundary.
+    for (const Corner& corner : halfedge_corner_) {
+      if (corner.face < 0) return false;
+    }
+    return true;
+  }
+  for (int e = 0; e < num_edges_; ++e) {
+    const Corners corners = EdgeCorners(e);
+    if (corners.size() != 2 || CornerVertex(corners[0]) == CornerVertex(corners[1])) return false;
+  }
+  return true;
 }
 
 int HalfedgeTopology::CornerVertex(const Corner& corner) const {

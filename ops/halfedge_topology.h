@@ -16,6 +16,7 @@
 #include <OpenMesh/Core/Mesh/PolyConnectivity.hh>
 #include <boost/container/small_vector.hpp>
 
+#include <array>
 #include <memory>
 #include <utility>
 #include <vector>
@@ -42,6 +43,8 @@ class HalfedgeTopology {
 
   // `faces` index vertices 0 .. num_vertices - 1 (#F loops of at least 3).
   HalfedgeTopology(const std::vector<Polygon>& faces, int num_vertices, Winding winding = Winding::kAsGiven);
+  // The same over a triangle list (Boolean's triangulations), without copying it into polygons.
+  HalfedgeTopology(const std::vector<std::array<int, 3>>& triangles, int num_vertices);
   // The half-edge mesh of `mesh`'s faces, built once per distinct face list: a search prepares
   // many ops (every choice it tries) on one mesh, and building costs more than most topology
   // passes. The last kCached face lists are kept (thread-safe).
@@ -55,6 +58,11 @@ class HalfedgeTopology {
 
   // The edge joining a and b (either way), or -1.
   int Edge(int a, int b) const;
+  // The face whose corner runs from -> to, or -1 (the last such face where several run it).
+  int EdgeFace(int from, int to) const;
+  // Whether every edge has exactly two corners, running opposite ways: a closed, consistently
+  // oriented surface (vertices may be pinched; an edge from a vertex to itself is never closed).
+  bool Closed() const;
   // The edge's vertices, directed as its first corner.
   std::pair<int, int> EdgeVertices(int e) const { return edge_vertices_[e]; }
   // The edge of corner c of face f.
@@ -81,9 +89,14 @@ class HalfedgeTopology {
   // Calls visit(halfedge) for each OpenMesh halfedge leaving v or one of its copies.
   template <typename Visit>
   void ForEachOutgoing(int v, Visit visit) const;
+  // Faces: std::vector<Polygon> or std::vector<std::array<int, 3>>.
+  template <typename Faces>
+  void Build(const Faces& faces, Winding winding);
   bool TryAddFace(const std::vector<VertexHandle>& handles, Winding winding);
-  void AddFace(const Polygon& face, Winding winding, std::vector<VertexHandle>* handles);
-  void NumberCornersAndEdges(const std::vector<Polygon>& faces);
+  template <typename Face>
+  void AddFace(const Face& face, Winding winding, std::vector<VertexHandle>* handles);
+  template <typename Faces>
+  void NumberCornersAndEdges(const Faces& faces);
 
   OpenMesh::PolyConnectivity mesh_;
   int num_vertices_ = 0;

@@ -1,6 +1,6 @@
 // HalfedgeTopology against brute force over the face list, on manifold, open and non-manifold
 // inputs (a third face on an edge, a flipped face, two closed fans at one vertex, a face that
-// repeats a vertex), for both windings.
+// repeats a vertex), for both windings, and over triangle lists.
 #include "ops/halfedge_topology.h"
 
 #include <gtest/gtest.h>
@@ -60,6 +60,28 @@ void ExpectMatchesBruteForce(const std::vector<Polygon>& faces, int num_vertices
       if (!edge_corners.count(Undirected(v, w))) EXPECT_EQ(topology.Edge(v, w), -1);
     }
   }
+  // Directed edge -> face (the last face running it) and closedness (each directed edge once,
+  // and its reverse once), as Boolean's maps had them.
+  std::map<std::pair<int, int>, int> face_of_directed, directed_count;
+  for (int f = 0; f < static_cast<int>(faces.size()); ++f) {
+    const int n = static_cast<int>(faces[f].size());
+    for (int c = 0; c < n; ++c) {
+      face_of_directed[{faces[f][c], faces[f][(c + 1) % n]}] = f;
+      ++directed_count[{faces[f][c], faces[f][(c + 1) % n]}];
+    }
+  }
+  bool closed = true;
+  for (const auto& [key, count] : directed_count) {
+    const auto reverse = directed_count.find({key.second, key.first});
+    closed = closed && key.first != key.second && count == 1 && reverse != directed_count.end() && reverse->second == 1;
+  }
+  EXPECT_EQ(topology.Closed(), closed);
+  for (int v = 0; v < num_vertices; ++v) {
+    for (int w = 0; w < num_vertices; ++w) {
+      const auto it = face_of_directed.find({v, w});
+      EXPECT_EQ(topology.EdgeFace(v, w), it == face_of_directed.end() ? -1 : it->second) << v << " -> " << w;
+    }
+  }
   if (winding == Winding::kEither) return;
   // Region boundaries: every prefix of the faces as a region.
   for (size_t size = 1; size <= faces.size(); ++size) {
@@ -91,6 +113,31 @@ TEST(HalfedgeTopology, ClosedCube) {
   const Mesh cube = MakeCube(2);
   ExpectMatchesBruteForce(cube.faces, cube.NumVertices());
   EXPECT_TRUE(HalfedgeTopology(cube.faces, cube.NumVertices()).Manifold());
+  EXPECT_TRUE(HalfedgeTopology(cube.faces, cube.NumVertices()).Closed());
+}
+
+TEST(HalfedgeTopology, TriangleList) {
+  // The cube split along its 0-2 diagonals, with one triangle repeated (a third face on edges).
+  const Mesh cube = MakeCube(2);
+  std::vector<std::array<int, 3>> triangles;
+  for (const Polygon& f : cube.faces) {
+    triangles.push_back({f[0], f[1], f[2]});
+    triangles.push_back({f[0], f[2], f[3]});
+  }
+  for (const bool repeat : {false, true}) {
+    if (repeat) triangles.push_back(triangles[3]);
+    std::vector<Polygon> polygons;
+    for (const auto& t : triangles) polygons.push_back({t[0], t[1], t[2]});
+    ExpectMatchesBruteForce(polygons, cube.NumVertices(), Winding::kAsGiven);
+    const HalfedgeTopology from_triangles(triangles, cube.NumVertices());
+    const HalfedgeTopology from_polygons(polygons, cube.NumVertices());
+    ASSERT_EQ(from_triangles.NumEdges(), from_polygons.NumEdges());
+    for (int e = 0; e < from_polygons.NumEdges(); ++e) {
+      EXPECT_EQ(from_triangles.EdgeVertices(e), from_polygons.EdgeVertices(e));
+    }
+    EXPECT_EQ(from_triangles.Closed(), !repeat);
+    EXPECT_EQ(from_triangles.EdgeFace(triangles[3][0], triangles[3][1]), repeat ? 12 : 3);
+  }
 }
 
 TEST(HalfedgeTopology, OpenGrid) {
