@@ -23,6 +23,7 @@
 #include <string>
 #include <vector>
 
+#include "ops/limits.h"
 #include "ops/params.h"
 #include "residuals/correspondence_cost.h"
 #include "solver/fitter.h"
@@ -58,6 +59,8 @@ struct ZeroShotOptions {
   // budget, the result depends on the machine's speed and load (metrics.json says which ended it).
   double time_budget_seconds = 0;
   int max_ops = 24;
+  // The most faces a step may have (Sequence::max_faces): a layout beyond it is not fitted.
+  int64_t max_faces = kDefaultMaxFaces;
   double min_relative_gain = 0.08;  // a proposal must lower the loss by this fraction
   uint64_t seed = 1;
   // Independent candidate fits run on this many threads; each fit runs on one (so the result
@@ -93,6 +96,9 @@ struct ZeroShotResult {
   SearchEnd end = SearchEnd::kComplete;
   bool search_complete = true;         // every proposal was tried (end == kComplete)
   bool freeform = false;               // whether free-form displacements were kept
+  // The finishing steps the time cap cut or skipped ("gate fit", "polish", "simplify",
+  // "freeform"), in order; empty without a cap.
+  std::vector<std::string> cut_by_time;
 };
 
 // How well work tracks wall time over `costs` (fits of at least 1 ms): the mean time of a work
