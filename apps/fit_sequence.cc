@@ -9,6 +9,7 @@
 // controller's decisions), replacing an earlier run's DIR whole (apps/output_folder.h).
 // Progress on stdout: a bar on a terminal, plain lines otherwise.
 // Bad input: one line on stderr naming the problem, exit code 2, and nothing written.
+#include <chrono>
 #include <cmath>
 #include <filesystem>
 #include <iostream>
@@ -48,6 +49,7 @@ opgraph::Json WorkPerTime(const std::vector<opgraph::FitCost>& costs) {
 
 int Run(int argc, char** argv) {
   using namespace opgraph;
+  const auto started = std::chrono::steady_clock::now();  // --time-budget counts the whole run
   // Ceres warns (with a dump of the residual block) when a trial step's Jacobian is not finite,
   // as at a Boolean's degenerate placement; the solver rejects that step by itself, and the
   // dump is noise on a user's terminal. Errors still show.
@@ -66,6 +68,7 @@ int Run(int argc, char** argv) {
     zero_shot_options.on_progress = [&printer](const SearchProgress& progress) { return printer(progress); };
   }
   const bool zero_shot = run.init_path.empty();
+  if (zero_shot_options.time_budget_seconds > 0) zero_shot_options.time_budget_start = started;
 
   // Everything is computed before anything is written.
   std::unique_ptr<Target> target;

@@ -27,7 +27,9 @@ int64_t Work(const FitSummary& summary) {
 }  // namespace
 
 Evaluator::Evaluator(const Target& target, const ZeroShotOptions& options)
-    : target_(target), options_(options), start_(std::chrono::steady_clock::now()) {
+    : target_(target),
+      options_(options),
+      start_(options.time_budget_start.value_or(std::chrono::steady_clock::now())) {
   search_options_.seed = options.seed;
   // One thread per fit: Ceres' threads sum a cost in an order that depends on scheduling,
   // which would make a fit (and so the search) differ between runs.

@@ -17,7 +17,9 @@
 // policy (search/policy.h), the fits (search/evaluator.h), the finishing steps (search/finish.h).
 #pragma once
 
+#include <chrono>
 #include <cstdint>
+#include <optional>
 #include <functional>
 #include <iosfwd>
 #include <string>
@@ -58,6 +60,9 @@ struct ZeroShotOptions {
   // A cap on wall time, in seconds (0: none). When the cap ends the search before the work
   // budget, the result depends on the machine's speed and load (metrics.json says which ended it).
   double time_budget_seconds = 0;
+  // When the cap's clock started (unset: when the search starts). A tool passes its own start,
+  // so reading the target counts too and the whole run ends within the cap.
+  std::optional<std::chrono::steady_clock::time_point> time_budget_start;
   int max_ops = 24;
   // The most faces a step may have (Sequence::max_faces): a layout beyond it is not fitted.
   int64_t max_faces = kDefaultMaxFaces;
