@@ -9,6 +9,8 @@
 #include <optional>
 #include <sstream>
 
+#include "core/printable.h"
+
 namespace opgraph {
 namespace {
 
@@ -197,8 +199,23 @@ std::string CommandLineHelp(const CommandLineOptions& options) {
 const char* OpgraphVersion() { return OPGRAPH_VERSION; }
 
 int BadInput(const std::string& tool, const std::string& message) {
-  std::cerr << tool << ": " << message << "\n";
+  std::cerr << tool << ": " << Printable(message, kMaxErrorChars) << "\n";
   return 2;
+}
+
+const char* MaxFacesHelp() {
+  static const std::string help = "the most faces any step of the sequence may have, in [1, " +
+                                  std::to_string(kMaxFacesCeiling) +
+                                  "]; all steps together may have 4 times as many; a sequence that grows beyond it "
+                                  "is refused, naming the op";
+  return help.c_str();
+}
+
+std::string CheckMaxFaces(int64_t max_faces) {
+  if (max_faces < 1 || max_faces > kMaxFacesCeiling) {
+    return "--max-faces: expected an integer in [1, " + std::to_string(kMaxFacesCeiling) + "]";
+  }
+  return "";
 }
 
 }  // namespace opgraph

@@ -11,8 +11,12 @@
 // meanings, exit 0) and --version (exit 0).
 #pragma once
 
+#include <cstddef>
+#include <cstdint>
 #include <string>
 #include <vector>
+
+#include "ops/limits.h"
 
 namespace opgraph {
 
@@ -47,7 +51,16 @@ std::string CommandLineHelp(const CommandLineOptions& options);
 // opgraph's version (CMake's project(VERSION)), as --version prints it.
 const char* OpgraphVersion();
 
-// Prints "tool: message" on stderr as one line; returns 2, the exit code for bad input.
+// The longest error line the tools print (a line on a terminal, not a dump).
+constexpr size_t kMaxErrorChars = 600;
+
+// Prints "tool: message" on stderr as one line (control characters shown as '?', a long
+// message cut); returns 2, the exit code for bad input.
 int BadInput(const std::string& tool, const std::string& message);
+
+// --max-faces, shared by fit_sequence and apply_sequence: its meaning for --help, and its check
+// (empty when fine, else the problem in the command line's words).
+const char* MaxFacesHelp();
+std::string CheckMaxFaces(int64_t max_faces);
 
 }  // namespace opgraph

@@ -9,6 +9,7 @@
 // controller's decisions), replacing an earlier run's DIR whole (apps/output_folder.h).
 // Progress on stdout: a bar on a terminal, plain lines otherwise.
 // Bad input: one line on stderr naming the problem, exit code 2, and nothing written.
+#include <chrono>
 #include <cmath>
 #include <filesystem>
 #include <iostream>
@@ -24,6 +25,7 @@
 #include "apps/output_folder.h"
 #include "apps/report_html.h"
 #include "apps/search_progress_printer.h"
+#include "apps/tool_errors.h"
 #include "core/metrics.h"
 #include "core/obj_io.h"
 #include "core/printable.h"
@@ -45,10 +47,9 @@ opgraph::Json WorkPerTime(const std::vector<opgraph::FitCost>& costs) {
           {"fit_ratio_p90", summary.ratio_p90}};
 }
 
-}  // namespace
-
-int main(int argc, char** argv) {
+int Run(int argc, char** argv) {
   using namespace opgraph;
+  const auto started = std::chrono::steady_clock::now();  // --time-budget counts the whole run
   // Ceres warns (with a dump of the residual block) when a trial step's Jacobian is not finite,
   // as at a Boolean's degenerate placement; the solver rejects that step by itself, and the
   // dump is noise on a user's terminal. Errors still show.
@@ -67,6 +68,7 @@ int main(int argc, char** argv) {
     zero_shot_options.on_progress = [&printer](const SearchProgress& progress) { return printer(progress); };
   }
   const bool zero_shot = run.init_path.empty();
+  if (zero_shot_options.time_budget_seconds > 0) zero_shot_options.time_budget_start = started;
 
   // Everything is computed before anything is written.
   std::unique_ptr<Target> target;
@@ -74,6 +76,8 @@ int main(int argc, char** argv) {
   FitSummary summary;
   ZeroShotResult recovered;
   SequenceOutputs outputs;
+  // The file an error names: the target until it is read, then the --init sequence.
+  std::string current_file = input_path;
   try {
     target = LoadTarget(input_path, run.target);
     if (zero_shot) {
@@ -83,14 +87,17 @@ int main(int argc, char** argv) {
       summary.final_loss = recovered.loss;
       summary.seconds = recovered.seconds;
     } else {
+      current_file = run.init_path;
       sequence = LoadSequence(run.init_path);
+      sequence.max_faces = zero_shot_options.max_faces;
       Fitter fitter(*target, &sequence, options);
       summary = fitter.Fit();
     }
   } catch (const std::exception& e) {
     printer.Close();
-    return BadInput("fit_sequence", e.what());
+    return ReportException("fit_sequence", current_file, e);
   }
+  sequence.max_faces = zero_shot_options.max_faces;
   BlenderScriptOptions blender;
   try {
     // The file's name in letters, digits and a few marks (a name that is not UTF-8 could not be
@@ -99,8 +106,7 @@ int main(int argc, char** argv) {
     if (run.blender_axes_import) blender.blender_from_sequence = BlenderImportFrame(input_path);
     outputs = RenderSequenceOutputs(&sequence, blender);
   } catch (const std::exception& e) {
-    std::cerr << "fit_sequence: the fitted sequence does not re-evaluate: " << e.what() << "\n";
-    return 1;
+    return ReportInternalFailure("fit_sequence", "the fitted sequence does not re-evaluate", e);
   }
 
   MetricsOptions metrics_options;
@@ -155,6 +161,7 @@ int main(int argc, char** argv) {
                       {"ended_by", SearchEndName(recovered.end)},
                       {"search_complete", recovered.search_complete},
                       {"freeform", recovered.freeform}};
+    if (zero_shot_options.time_budget_seconds > 0) metrics["fit"]["cut_by_time_budget"] = recovered.cut_by_time;
   }
   std::string log;
   for (const std::string& line : recovered.decisions) log += line + "\n";
@@ -173,10 +180,13 @@ int main(int argc, char** argv) {
     WriteFileAtomic(folder.staging_dir() + "/report.html", ReportHtml(report));
     folder.Commit();
   } catch (const std::exception& e) {
-    std::cerr << "fit_sequence: " << e.what() << "\n";
-    return 1;
+    return ReportInternalFailure("fit_sequence", out_dir, e);
   }
   std::cout << "fit_sequence: " << sequence.ops.size() << " ops, loss " << summary.final_loss << ", Chamfer "
             << shape.chamfer.Sum() << " (unit box), " << summary.seconds << " s -> " << out_dir << "\n";
   return 0;
 }
+
+}  // namespace
+
+int main(int argc, char** argv) { return opgraph::RunAtToolEdge("fit_sequence", Run, argc, argv); }

@@ -70,6 +70,11 @@ void Register() {
       {"Inset", "Inset", {{"faces", up}, {"thickness", 0.05}}},
       {"BevelAngle", "Bevel", {{"width", 0.02}, {"segments", 3}, {"limit_method", "ANGLE"}}},
       {"BevelAll", "Bevel", {{"width", 0.01}, {"segments", 2}}},
+      // Through the lattice cube (side 2) off its axes: cuts the side faces and leaves holes in
+      // the caps, so every step of the topology pass (provenance, merge, dissolve) has work.
+      {"BooleanDifference", "Boolean", {{"operation", "DIFFERENCE"}, {"primitive", "cylinder"},
+                                        {"size", {0.9, 0.9, 3}}, {"rotation_deg", {10, 5, 0}},
+                                        {"location", {0.13, 0.07, 0}}}},
   };
   for (const auto& c : cases) {
     benchmark::RegisterBenchmark(("Prepare/" + c.label).c_str(), PrepareOp, c.op, c.params)

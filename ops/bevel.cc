@@ -6,6 +6,7 @@
 
 #include "core/geometry.h"
 #include "ops/halfedge_topology.h"
+#include "ops/orient_against_neighbours.h"
 
 namespace opgraph {
 

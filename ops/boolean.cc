@@ -4,13 +4,16 @@
 #include <cstdio>
 #include <map>
 #include <numeric>
-#include <set>
 
 #include "core/geometry.h"
 #include "ops/boolean_cgal.h"
+#include "ops/boolean_triangulation.h"
+#include "ops/halfedge_topology.h"
 
 namespace opgraph {
 namespace {
+
+using Source = BooleanOp::Source;
 
 const std::vector<std::string> kOperations = {"UNION", "DIFFERENCE"};
 const std::vector<std::string> kPrimitives = {"cube", "prism6", "prism8", "cylinder"};
@@ -45,222 +48,6 @@ Mesh MakePrism(int n) {
   for (int k = 0; k < n; ++k) bottom.push_back(2 * k);
   mesh.faces.push_back(bottom);
   return mesh;
-}
-
-// One triangle of a mesh's triangulation and the polygon it belongs to.
-struct SourceTriangle {
-  std::array<int, 3> corners;
-  int face;
-};
-
-int DominantAxis(const Vec3d& a, const Vec3d& b, const Vec3d& c) {
-  int axis;
-  (b - a).cross(c - a).cwiseAbs().maxCoeff(&axis);
-  return axis;
-}
-
-// Flips edges between triangles of the same group (>= 0) until each is locally Delaunay in the
-// projection of triangle t along coordinate axis[t]: the constrained Delaunay triangulation of
-// each group, with the group's outline as constraints. A cocircular tie is never flipped.
-void DelaunayFlips(const Positions<double>& vertices, const std::vector<int>& group, const std::vector<int>& axis,
-                   std::vector<std::array<int, 3>>* triangles) {
-  if (vertices.empty()) return;
-  Vec3d lo = vertices[0], hi = vertices[0];
-  for (const Vec3d& v : vertices) lo = lo.cwiseMin(v), hi = hi.cwiseMax(v);
-  const double tie = 1e-12 * std::pow((hi - lo).norm(), 4);
-  for (int pass = 0; pass < 1000; ++pass) {
-    std::map<std::pair<int, int>, int> triangle_of_edge;  // directed edge -> triangle
-    for (size_t t = 0; t < triangles->size(); ++t) {
-      const auto& c = (*triangles)[t];
-      for (int i = 0; i < 3; ++i) triangle_of_edge[{c[i], c[(i + 1) % 3]}] = static_cast<int>(t);
-    }
-    std::vector<bool> touched(triangles->size(), false);
-    bool flipped = false;
-    for (const auto& e : triangle_of_edge) {
-      const int u = e.first.first, v = e.first.second;
-      const auto twin = triangle_of_edge.find({v, u});
-      if (u > v || twin == triangle_of_edge.end()) continue;
-      const int left = e.second, right = twin->second;
-      if (group[left] < 0 || group[left] != group[right] || touched[left] || touched[right]) continue;
-      auto third = [&](int t) {
-        for (int c : (*triangles)[t]) {
-          if (c != u && c != v) return c;
-        }
-        return -1;
-      };
-      const int w = third(left), x = third(right);
-      if (w < 0 || x < 0 || w == x) continue;  // a degenerate triangle (repeated corner) cannot flip
-      auto project = [&](int vertex) {
-        const Vec3d& q = vertices[vertex];
-        return Eigen::Vector2d(q[(axis[left] + 1) % 3], q[(axis[left] + 2) % 3]);
-      };
-      const Eigen::Vector2d pu = project(u), pv = project(v), pw = project(w), px = project(x);
-      const double orientation = (pv - pu).x() * (pw - pu).y() - (pv - pu).y() * (pw - pu).x();
-      Eigen::Matrix3d in_circle;
-      const Eigen::Vector2d rows[3] = {pu - px, pv - px, pw - px};
-      for (int i = 0; i < 3; ++i) in_circle.row(i) << rows[i].x(), rows[i].y(), rows[i].squaredNorm();
-      const double side = orientation > 0 ? 1 : -1;
-      auto area = [](const Eigen::Vector2d& a, const Eigen::Vector2d& b, const Eigen::Vector2d& c) {
-        return (b - a).x() * (c - a).y() - (b - a).y() * (c - a).x();
-      };
-      // Only a strictly convex quad can flip (guards against degenerate triangles).
-      if (side * area(pu, px, pw) <= 0 || side * area(px, pv, pw) <= 0) continue;
-      if (in_circle.determinant() * side <= tie) continue;
-      // (u, v, w) and (v, u, x) become (u, x, w) and (x, v, w), same winding.
-      (*triangles)[left] = {u, x, w};
-      (*triangles)[right] = {x, v, w};
-      touched[left] = touched[right] = flipped = true;
-    }
-    if (!flipped) return;
-  }
-}
-
-// Sign of the turn a -> b -> c in 2D: 1 convex (counter-clockwise), -1 concave, 0 straight.
-int TurnSign(const Eigen::Vector2d& a, const Eigen::Vector2d& b, const Eigen::Vector2d& c) {
-  const double area = (a.x() - c.x()) * (b.y() - c.y()) - (a.y() - c.y()) * (b.x() - c.x());
-  return area > 0 ? 1 : (area < 0 ? -1 : 0);
-}
-
-// Blender's BLI_polyfill_calc on a counter-clockwise 2D polygon, as the exact boolean calls it:
-// ear clipping from vertex 0 that skips to every other vertex after a cut and sweeps back and
-// forth when the next candidate is not convex. Returns #P - 2 triangles of polygon positions.
-std::vector<std::array<int, 3>> PolyFill(const std::vector<Eigen::Vector2d>& co) {
-  const int n = static_cast<int>(co.size());
-  std::vector<int> next(n), prev(n), sign(n);
-  for (int i = 0; i < n; ++i) next[i] = (i + 1) % n, prev[i] = (i + n - 1) % n;
-  int num_concave = 0;
-  for (int i = 0; i < n; ++i) {
-    sign[i] = TurnSign(co[prev[i]], co[i], co[next[i]]);
-    num_concave += sign[i] != 1;
-  }
-  auto is_ear = [&](int tip) {
-    if (num_concave == 0) return true;
-    if (sign[tip] != 1) return false;
-    const Eigen::Vector2d &v1 = co[prev[tip]], &v2 = co[tip], &v3 = co[next[tip]];
-    for (int c = next[next[tip]]; c != prev[tip]; c = next[c]) {
-      if (sign[c] == 1) continue;
-      if (TurnSign(v1, v2, co[c]) != -1 && TurnSign(v2, v3, co[c]) != -1 && TurnSign(v3, v1, co[c]) != -1) {
-        return false;
-      }
-    }
-    return true;
-  };
-  std::vector<std::array<int, 3>> triangles;
-  int remaining = n, init = 0;
-  bool reverse = false;
-  while (remaining > 3) {
-    int ear = init;
-    bool found = false;
-    for (int i = 0; i < remaining && !found; ++i) {
-      if (is_ear(ear)) found = true;
-      else ear = reverse ? prev[ear] : next[ear];
-    }
-    if (!found) ear = init;  // a degenerate polygon; the caller falls back on exact triangulation
-    const int p = prev[ear], q = next[ear];
-    triangles.push_back({p, ear, q});
-    next[p] = q;
-    prev[q] = p;
-    --remaining;
-    for (int v : {p, q}) {
-      if (sign[v] == 1) continue;
-      sign[v] = TurnSign(co[prev[v]], co[v], co[next[v]]);
-      if (sign[v] == 1) --num_concave;
-    }
-    init = reverse ? prev[p] : next[q];
-    if (sign[init] != 1) {
-      init = reverse ? prev[init] : next[init];
-      reverse = !reverse;
-    }
-  }
-  triangles.push_back({prev[init], init, next[init]});
-  return triangles;
-}
-
-// Ear clipping of a counter-clockwise 2D polygon that only cuts strictly convex ears with no
-// other vertex inside or on them (no degenerate triangles where the polygon has straight
-// corners), trying tips from vertex 1 on. Falls back on any tip for a polygon it cannot cut.
-std::vector<std::array<int, 3>> EarClip(const std::vector<Eigen::Vector2d>& co) {
-  std::vector<int> loop(co.size());
-  std::iota(loop.begin(), loop.end(), 0);
-  std::vector<std::array<int, 3>> triangles;
-  while (loop.size() > 3) {
-    const int k = static_cast<int>(loop.size());
-    int ear = 1;
-    for (int i = 1; i <= k; ++i) {
-      const int c = i % k;
-      const int a = loop[(c + k - 1) % k], b = loop[c], d = loop[(c + 1) % k];
-      if (TurnSign(co[a], co[b], co[d]) != 1) continue;
-      bool empty = true;
-      for (int j = 0; j < k && empty; ++j) {
-        const int q = loop[j];
-        if (q == a || q == b || q == d || co[q] == co[a] || co[q] == co[b] || co[q] == co[d]) continue;
-        empty = !(TurnSign(co[a], co[b], co[q]) != -1 && TurnSign(co[b], co[d], co[q]) != -1 &&
-                  TurnSign(co[d], co[a], co[q]) != -1);
-      }
-      if (empty) {
-        ear = c;
-        break;
-      }
-    }
-    triangles.push_back({loop[(ear + k - 1) % k], loop[ear], loop[(ear + 1) % k]});
-    loop.erase(loop.begin() + ear);
-  }
-  triangles.push_back({loop[0], loop[1], loop[2]});
-  return triangles;
-}
-
-// Blender's triangulation of the boolean's operands (mesh_boolean's triangulate_poly): quads
-// along the 0-2 diagonal unless that splits them badly (then 1-3), larger polygons by PolyFill in
-// the plane perpendicular to their normal; where that makes a degenerate triangle, Blender uses
-// its exact constrained Delaunay triangulation, emulated here by flips (a cocircular tie left as
-// the ear clipping made it, where Blender's choice follows its own insertion order).
-std::vector<SourceTriangle> Triangulate(const Mesh& mesh) {
-  std::vector<SourceTriangle> triangles;
-  std::vector<int> group, axis;
-  for (int f = 0; f < mesh.NumFaces(); ++f) {
-    const Polygon& loop = mesh.faces[f];
-    const int k = static_cast<int>(loop.size());
-    const Vec3d normal = FaceAreaNormal(mesh.vertices, loop).normalized();
-    int dominant;
-    normal.cwiseAbs().maxCoeff(&dominant);
-    std::vector<std::array<int, 3>> local;
-    if (k == 3) {
-      local = {{0, 1, 2}};
-    } else if (k == 4) {
-      const Vec3d& v0 = mesh.vertices[loop[0]];
-      const Vec3d d02 = mesh.vertices[loop[2]] - v0;
-      const bool flip = (mesh.vertices[loop[1]] - v0).cross(d02).dot((mesh.vertices[loop[3]] - v0).cross(d02)) > 0;
-      local = flip ? std::vector<std::array<int, 3>>{{0, 1, 3}, {1, 2, 3}}
-                   : std::vector<std::array<int, 3>>{{0, 1, 2}, {0, 2, 3}};
-    } else {
-      const Vec3d u = normal.unitOrthogonal(), v = normal.cross(u);
-      std::vector<Eigen::Vector2d> co;
-      for (int i : loop) co.emplace_back(u.dot(mesh.vertices[i]), v.dot(mesh.vertices[i]));
-      local = PolyFill(co);
-    }
-    bool degenerate = false;
-    for (const auto& t : local) {
-      const Vec3d& a = mesh.vertices[loop[t[0]]];
-      const Vec3d da = mesh.vertices[loop[t[2]]] - a, db = mesh.vertices[loop[t[2]]] - mesh.vertices[loop[t[1]]];
-      degenerate = degenerate || da.cross(db).squaredNorm() < 1e-8 * da.squaredNorm() * db.squaredNorm();
-    }
-    if (degenerate) {
-      const Vec3d u = normal.unitOrthogonal(), v = normal.cross(u);
-      std::vector<Eigen::Vector2d> co;
-      for (int i : loop) co.emplace_back(u.dot(mesh.vertices[i]), v.dot(mesh.vertices[i]));
-      local = EarClip(co);
-    }
-    for (const auto& t : local) {
-      triangles.push_back({{loop[t[0]], loop[t[1]], loop[t[2]]}, f});
-      group.push_back(degenerate ? f : -1);
-      axis.push_back(dominant);
-    }
-  }
-  std::vector<std::array<int, 3>> corners;
-  for (const SourceTriangle& t : triangles) corners.push_back(t.corners);
-  DelaunayFlips(mesh.vertices, group, axis, &corners);
-  for (size_t t = 0; t < triangles.size(); ++t) triangles[t].corners = corners[t];
-  return triangles;
 }
 
 double SegmentDistance(const Vec3d& p, const Vec3d& a, const Vec3d& b) {
@@ -335,112 +122,55 @@ void WeldCoincidentPoints(double tolerance, TriangleSoup* soup) {
   soup->triangles = std::move(triangles);
 }
 
-}  // namespace
+// Both operands as CGAL takes them (input, then primitive), with what the provenance steps
+// look up in them.
+struct Operands {
+  const TriangleSoup* soups[2];
+  const std::vector<SourceTriangle>* triangles[2];
+  double tolerance;              // of the geometric tests: 1e-9 of both operands' bounding box
+  Eigen::AlignedBox3d boxes[2];  // each operand's bounding box, grown by the tolerance
 
-std::string SolidProblem(const Mesh& mesh) {
-  TriangleSoup soup;
-  soup.vertices = mesh.vertices;
-  for (const SourceTriangle& t : Triangulate(mesh)) soup.triangles.push_back(t.corners);
-  return CgalSolidProblem(soup, "the mesh");
-}
-
-BooleanOp::BooleanOp(const Json& params) {
-  ParamReader reader(params);
-  difference_ = reader.Word("operation", kOperations) == "DIFFERENCE";
-  primitive_ = reader.Word("primitive", kPrimitives);
-  const Vec3d size = reader.Vector3("size", 1e-6, 1e6);
-  const Vec3d rotation_deg = reader.Vector3("rotation_deg", -3600, 3600, Vec3d::Zero());
-  const Vec3d location = reader.Vector3("location", -1e6, 1e6, Vec3d::Zero());
-  reader.Finish();
-  const char* axes[3] = {"x", "y", "z"};
-  for (int i = 0; i < 3; ++i) AddParam(std::string("size_") + axes[i], 1e-6, 1e6, size[i], size[i]);
-  for (int i = 0; i < 3; ++i) {
-    const double radians = DegToRad(rotation_deg[i]);
-    AddParam(std::string("rotation_") + axes[i], -4 * kPi, 4 * kPi, radians, radians);
-  }
-  for (int i = 0; i < 3; ++i) AddParam(std::string("location_") + axes[i], -1e6, 1e6, location[i], location[i]);
-  template_ = primitive_ == "cube" ? MakeCube(1.0) : MakePrism(Segments(primitive_));
-}
-
-template <typename T>
-Vec3<T> BooleanOp::PrimitiveVertex(const T* p, const Eigen::Matrix<T, 3, 3>& rotation, int v) const {
-  const Vec3<T> scaled = template_.vertices[v].cast<T>().cwiseProduct(Vec3<T>(p[0], p[1], p[2]));
-  return rotation * scaled + Vec3<T>(p[6], p[7], p[8]);
-}
-
-void BooleanOp::Prepare(const Mesh& input) {
-  input_faces_ = input.faces;
-  if (input.faces.empty()) throw FieldError("operation", "the input mesh has no faces");
-  // A closed manifold has each directed edge once and its reverse once.
-  std::map<std::pair<int, int>, int> directed;
-  for (const Polygon& f : input.faces) {
-    for (size_t i = 0; i < f.size(); ++i) ++directed[{f[i], f[(i + 1) % f.size()]}];
-  }
-  for (const auto& e : directed) {
-    const auto reverse = directed.find({e.first.second, e.first.first});
-    if (e.second != 1 || reverse == directed.end() || reverse->second != 1) {
-      throw FieldError("operation", "the input mesh is not a closed, consistently oriented manifold");
+  Operands(const TriangleSoup& a, const std::vector<SourceTriangle>& a_triangles, const TriangleSoup& b,
+           const std::vector<SourceTriangle>& b_triangles)
+      : soups{&a, &b}, triangles{&a_triangles, &b_triangles} {
+    Vec3d lo = a.vertices[0], hi = a.vertices[0];
+    for (const Vec3d& v : a.vertices) lo = lo.cwiseMin(v), hi = hi.cwiseMax(v);
+    for (const Vec3d& v : b.vertices) lo = lo.cwiseMin(v), hi = hi.cwiseMax(v);
+    tolerance = 1e-9 * std::max((hi - lo).norm(), 1e-12);
+    for (int m = 0; m < 2; ++m) {
+      for (const Vec3d& v : soups[m]->vertices) boxes[m].extend(v);
+      boxes[m].extend(boxes[m].min() - Vec3d::Constant(tolerance)).extend(boxes[m].max() + Vec3d::Constant(tolerance));
     }
   }
-
-  // Both operands as triangle soups; the primitive's vertices follow the input's.
-  Mesh primitive = template_;
-  const Eigen::Matrix3d rotation = EulerXYZToMatrix(params_[3], params_[4], params_[5]);
-  for (int v = 0; v < primitive.NumVertices(); ++v) {
-    primitive.vertices[v] = PrimitiveVertex(params_.data(), rotation, v);
-  }
-  const std::vector<SourceTriangle> input_triangles = Triangulate(input);
-  const std::vector<SourceTriangle> primitive_triangles = Triangulate(primitive);
-  TriangleSoup a, b, result;
-  a.vertices = input.vertices;
-  for (const SourceTriangle& t : input_triangles) a.triangles.push_back(t.corners);
-  b.vertices = primitive.vertices;
-  for (const SourceTriangle& t : primitive_triangles) b.triangles.push_back(t.corners);
-  const std::string problem =
-      CgalBoolean(a, b, difference_ ? BooleanKind::kDifference : BooleanKind::kUnion, &result);
-  if (!problem.empty()) throw FieldError("operation", problem);
-
-  // Provenance of CGAL's vertices, recovered geometrically (CGAL's points are its exact ones
-  // rounded to double).
-  Vec3d lo = input.vertices[0], hi = input.vertices[0];
-  for (const Vec3d& v : a.vertices) lo = lo.cwiseMin(v), hi = hi.cwiseMax(v);
-  for (const Vec3d& v : b.vertices) lo = lo.cwiseMin(v), hi = hi.cwiseMax(v);
-  const double tolerance = 1e-9 * std::max((hi - lo).norm(), 1e-12);
-  const TriangleSoup* operands[2] = {&a, &b};
-  std::vector<std::pair<int, int>> edges[2];  // unique triangulation edges of each operand
-  for (int m = 0; m < 2; ++m) {
-    std::set<std::pair<int, int>> seen;
-    for (const auto& t : operands[m]->triangles) {
-      for (int i = 0; i < 3; ++i) {
-        const std::pair<int, int> e = std::minmax(t[i], t[(i + 1) % 3]);
-        if (seen.insert(e).second) edges[m].push_back(e);
-      }
-    }
-  }
-  // Only edges and triangles within the other operand's bounding box can take part in crossings.
-  Eigen::AlignedBox3d boxes[2];
-  for (int m = 0; m < 2; ++m) {
-    for (const Vec3d& v : operands[m]->vertices) boxes[m].extend(v);
-    boxes[m].extend(boxes[m].min() - Vec3d::Constant(tolerance)).extend(boxes[m].max() + Vec3d::Constant(tolerance));
-  }
-  auto near_other = [&](int m, std::initializer_list<int> corners) {
+  // Whether these corners of operand m come near the other operand (its box): only edges and
+  // triangles that do can take part in crossings.
+  bool NearOther(int m, std::initializer_list<int> corners) const {
     Eigen::AlignedBox3d box;
-    for (int v : corners) box.extend(operands[m]->vertices[v]);
+    for (int v : corners) box.extend(soups[m]->vertices[v]);
     return box.intersects(boxes[1 - m]);
-  };
-  std::vector<std::array<int, 3>> near_triangles[2];
-  for (int m = 0; m < 2; ++m) {
-    edges[m].erase(std::remove_if(edges[m].begin(), edges[m].end(),
-                                  [&](const std::pair<int, int>& e) { return !near_other(m, {e.first, e.second}); }),
-                   edges[m].end());
-    for (const auto& t : operands[m]->triangles) {
-      if (near_other(m, {t[0], t[1], t[2]})) near_triangles[m].push_back(t);
-    }
   }
+};
+
+// Provenance of CGAL's vertices, recovered geometrically (CGAL's points are its exact ones
+// rounded to double): an operand vertex at the same coordinates, else the best conditioned
+// crossing of an edge of one operand with a triangle of the other through the point.
+std::vector<Source> VertexSources(const Operands& ops, const TriangleSoup& result) {
+  // The triangulation edges near the other operand (lower vertex first, as crossings record them).
+  std::vector<std::pair<int, int>> edges[2];
+  std::vector<std::array<int, 3>> near_triangles[2];
   std::map<std::array<double, 3>, int> vertex_at[2];  // exact coordinates -> operand vertex
   for (int m = 0; m < 2; ++m) {
-    for (size_t v = 0; v < operands[m]->vertices.size(); ++v) {
-      const Vec3d& q = operands[m]->vertices[v];
+    const TriangleSoup& soup = *ops.soups[m];
+    const HalfedgeTopology topology(soup.triangles, static_cast<int>(soup.vertices.size()));
+    for (int e = 0; e < topology.NumEdges(); ++e) {
+      const auto [from, to] = topology.EdgeVertices(e);
+      if (ops.NearOther(m, {from, to})) edges[m].push_back({std::min(from, to), std::max(from, to)});
+    }
+    for (const auto& t : soup.triangles) {
+      if (ops.NearOther(m, {t[0], t[1], t[2]})) near_triangles[m].push_back(t);
+    }
+    for (size_t v = 0; v < soup.vertices.size(); ++v) {
+      const Vec3d& q = soup.vertices[v];
       vertex_at[m].insert({{q.x(), q.y(), q.z()}, static_cast<int>(v)});
     }
   }
@@ -460,16 +190,16 @@ void BooleanOp::Prepare(const Mesh& input) {
     // A crossing: the best conditioned (edge of one operand, triangle of the other) through p.
     double best = 1e-6;
     for (int m = 0; m < 2; ++m) {
-      const TriangleSoup& mine = *operands[m];
-      const TriangleSoup& other = *operands[1 - m];
+      const TriangleSoup& mine = *ops.soups[m];
+      const TriangleSoup& other = *ops.soups[1 - m];
       for (const auto& e : edges[m]) {
         const Vec3d& from = mine.vertices[e.first];
         const Vec3d& to = mine.vertices[e.second];
-        if (SegmentDistance(p, from, to) > tolerance) continue;
+        if (SegmentDistance(p, from, to) > ops.tolerance) continue;
         const Vec3d direction = (to - from).normalized();
         for (const auto& t : near_triangles[1 - m]) {
           Vec3d n;
-          if (!OnTriangle(p, other.vertices[t[0]], other.vertices[t[1]], other.vertices[t[2]], tolerance, &n)) continue;
+          if (!OnTriangle(p, other.vertices[t[0]], other.vertices[t[1]], other.vertices[t[2]], ops.tolerance, &n)) continue;
           const double conditioning = std::abs(n.dot(direction));
           if (conditioning > best) {
             best = conditioning;
@@ -492,27 +222,32 @@ void BooleanOp::Prepare(const Mesh& input) {
     }
   }
 
-  WeldCoincidentPoints(1e-3 * tolerance, &result);
+  return sources;
+}
 
-  // Source polygon of each result triangle: that of the operand triangle it is (uncut), else the
-  // one its centroid lies on, parallel to it; the input mesh wins where both operands overlap.
+// The source polygon (input's, then primitive's) and operand triangle (likewise) of each result
+// triangle: the operand triangle it is (uncut), else the one its centroid lies on, parallel to
+// it; the input mesh wins where both operands overlap.
+void TriangleSources(const Operands& ops, int num_input_faces, const TriangleSoup& result,
+                     const std::vector<Source>& sources, std::vector<int>* source_face,
+                     std::vector<int>* source_triangle) {
   const int num_result_triangles = static_cast<int>(result.triangles.size());
-  std::vector<int> source_face(num_result_triangles, -1);      // input's, then primitive's
-  std::vector<int> source_triangle(num_result_triangles, -1);  // input's, then primitive's
-  std::map<std::array<int, 3>, int> triangle_with_corners[2];
+  source_face->assign(num_result_triangles, -1);
+  source_triangle->assign(num_result_triangles, -1);
+  std::map<std::array<int, 3>, int> triangle_with_corners[2];  // sorted corners -> triangle
   std::vector<bool> near[2];
   for (int m = 0; m < 2; ++m) {
-    const std::vector<SourceTriangle>& triangles = m == 0 ? input_triangles : primitive_triangles;
+    const std::vector<SourceTriangle>& triangles = *ops.triangles[m];
     for (size_t k = 0; k < triangles.size(); ++k) {
       std::array<int, 3> c = triangles[k].corners;
-      near[m].push_back(near_other(m, {c[0], c[1], c[2]}));
+      near[m].push_back(ops.NearOther(m, {c[0], c[1], c[2]}));
       std::sort(c.begin(), c.end());
       triangle_with_corners[m][c] = static_cast<int>(k);
     }
   }
   for (int r = 0; r < num_result_triangles; ++r) {
     const auto& t = result.triangles[r];
-    for (int m = 0; m < 2 && source_face[r] < 0; ++m) {
+    for (int m = 0; m < 2 && (*source_face)[r] < 0; ++m) {
       const Source::Kind kind = m == 0 ? Source::kInput : Source::kPrimitive;
       std::array<int, 3> corners;
       bool all_original = true;
@@ -524,39 +259,44 @@ void BooleanOp::Prepare(const Mesh& input) {
       std::sort(corners.begin(), corners.end());
       const auto it = triangle_with_corners[m].find(corners);
       if (it == triangle_with_corners[m].end()) continue;
-      const std::vector<SourceTriangle>& triangles = m == 0 ? input_triangles : primitive_triangles;
-      source_face[r] = (m == 0 ? 0 : input.NumFaces()) + triangles[it->second].face;
-      source_triangle[r] = (m == 0 ? 0 : static_cast<int>(input_triangles.size())) + it->second;
+      const std::vector<SourceTriangle>& triangles = *ops.triangles[m];
+      (*source_face)[r] = (m == 0 ? 0 : num_input_faces) + triangles[it->second].face;
+      (*source_triangle)[r] = (m == 0 ? 0 : static_cast<int>(ops.triangles[0]->size())) + it->second;
     }
-    if (source_face[r] >= 0) continue;
+    if ((*source_face)[r] >= 0) continue;
     const Vec3d& p0 = result.vertices[t[0]];
     const Vec3d& p1 = result.vertices[t[1]];
     const Vec3d& p2 = result.vertices[t[2]];
     const Vec3d centroid = (p0 + p1 + p2) / 3;
     const Vec3d normal = (p1 - p0).cross(p2 - p0).normalized();
     double best = 1 - 1e-6;
-    for (int m = 0; m < 2 && source_face[r] < 0; ++m) {
-      const TriangleSoup& operand = *operands[m];
-      const std::vector<SourceTriangle>& triangles = m == 0 ? input_triangles : primitive_triangles;
+    for (int m = 0; m < 2 && (*source_face)[r] < 0; ++m) {
+      const TriangleSoup& operand = *ops.soups[m];
+      const std::vector<SourceTriangle>& triangles = *ops.triangles[m];
       for (size_t k = 0; k < triangles.size(); ++k) {
         if (!near[m][k]) continue;
         const auto& c = triangles[k].corners;
         Vec3d n;
         const Vec3d& c0 = operand.vertices[c[0]];
-        if (!OnTriangle(centroid, c0, operand.vertices[c[1]], operand.vertices[c[2]], tolerance, &n)) continue;
+        if (!OnTriangle(centroid, c0, operand.vertices[c[1]], operand.vertices[c[2]], ops.tolerance, &n)) continue;
         if (std::abs(n.dot(normal)) > best) {
           best = std::abs(n.dot(normal));
-          source_face[r] = (m == 0 ? 0 : input.NumFaces()) + triangles[k].face;
-          source_triangle[r] = (m == 0 ? 0 : static_cast<int>(input_triangles.size())) + static_cast<int>(k);
+          (*source_face)[r] = (m == 0 ? 0 : num_input_faces) + triangles[k].face;
+          (*source_triangle)[r] = (m == 0 ? 0 : static_cast<int>(ops.triangles[0]->size())) + static_cast<int>(k);
         }
       }
     }
-    if (source_face[r] < 0) throw FieldError("operation", "internal: a face of the boolean has no source");
+    if ((*source_face)[r] < 0) throw FieldError("operation", "internal: a face of the boolean has no source");
   }
 
-  // A cut non-planar input polygon: which diagonal Blender's triangulation takes follows its
-  // loop start, which the ops before need not reproduce, and the two diagonals are different
-  // surfaces there (the cut's vertices, and their count, move with it).
+}
+
+// A cut non-planar input polygon: which diagonal Blender's triangulation takes follows its
+// loop start, which the ops before need not reproduce, and the two diagonals are different
+// surfaces there (the cut's vertices, and their count, move with it).
+void RefuseCutNonPlanarFaces(const Mesh& input, const TriangleSoup& result, const std::vector<int>& source_face,
+                             const std::vector<Source>& sources) {
+  const int num_result_triangles = static_cast<int>(result.triangles.size());
   std::vector<bool> cut(input.NumFaces(), false);
   for (int r = 0; r < num_result_triangles; ++r) {
     if (source_face[r] >= input.NumFaces()) continue;
@@ -576,20 +316,27 @@ void BooleanOp::Prepare(const Mesh& input) {
     }
   }
 
-  // Blender retriangulates each operand triangle with a constrained Delaunay triangulation; CGAL's
-  // retriangulation need not be Delaunay, and the merge below depends on the triangles.
-  std::vector<int> dominant_axis(num_result_triangles);
-  for (int r = 0; r < num_result_triangles; ++r) {
+}
+
+// Blender retriangulates each operand triangle with a constrained Delaunay triangulation; CGAL's
+// retriangulation need not be Delaunay, and the merge depends on the triangles.
+void MakeDelaunay(const Operands& ops, const std::vector<int>& source_triangle, TriangleSoup* result) {
+  const int num_input_triangles = static_cast<int>(ops.triangles[0]->size());
+  std::vector<int> dominant_axis(result->triangles.size());
+  for (size_t r = 0; r < result->triangles.size(); ++r) {
     const int k = source_triangle[r];
-    const bool on_input = k < static_cast<int>(input_triangles.size());
-    const TriangleSoup& operand = on_input ? a : b;
-    const auto& c = (on_input ? input_triangles[k] : primitive_triangles[k - input_triangles.size()]).corners;
+    const int m = k < num_input_triangles ? 0 : 1;
+    const TriangleSoup& operand = *ops.soups[m];
+    const auto& c = (*ops.triangles[m])[m == 0 ? k : k - num_input_triangles].corners;
     dominant_axis[r] = DominantAxis(operand.vertices[c[0]], operand.vertices[c[1]], operand.vertices[c[2]]);
   }
-  DelaunayFlips(result.vertices, source_triangle, dominant_axis, &result.triangles);
+  DelaunayFlips(result->vertices, source_triangle, dominant_axis, &result->triangles);
+}
 
-  // Merge the triangles of each source polygon (see the header), then dissolve new vertices
-  // that only continue a straight chain between the same two polygons.
+// The triangles of each source polygon merged back into polygons (see the header).
+std::vector<Polygon> MergeTriangles(const Mesh& input, const Mesh& primitive, const TriangleSoup& result,
+                                    const std::vector<int>& source_face, const std::vector<Source>& sources) {
+  const int num_result_triangles = static_cast<int>(result.triangles.size());
   std::vector<Polygon> polygons(num_result_triangles);
   std::vector<int> parent(num_result_triangles);
   for (int r = 0; r < num_result_triangles; ++r) {
@@ -600,23 +347,16 @@ void BooleanOp::Prepare(const Mesh& input) {
     while (parent[x] != x) x = parent[x] = parent[parent[x]];
     return x;
   };
-  std::map<std::pair<int, int>, int> triangle_of_edge;  // directed edge -> result triangle
-  for (int r = 0; r < num_result_triangles; ++r) {
-    for (int i = 0; i < 3; ++i) triangle_of_edge[{result.triangles[r][i], result.triangles[r][(i + 1) % 3]}] = r;
-  }
   struct Candidate {
     double length_squared;
     int from, to;  // directed edge of triangle `left`
     int left, right;
   };
   std::vector<Candidate> candidates;
-  for (const auto& e : triangle_of_edge) {
-    const auto twin = triangle_of_edge.find({e.first.second, e.first.first});
-    if (e.first.first > e.first.second || twin == triangle_of_edge.end()) continue;
-    const int left = e.second, right = twin->second;
-    if (source_face[left] != source_face[right]) continue;
-    const double length_squared = (result.vertices[e.first.first] - result.vertices[e.first.second]).squaredNorm();
-    candidates.push_back({length_squared, e.first.first, e.first.second, left, right});
+  for (const TwoSidedEdge& e : TwoSidedEdges(result.triangles, static_cast<int>(result.vertices.size()))) {
+    if (source_face[e.left] != source_face[e.right]) continue;
+    const double length_squared = (result.vertices[e.from] - result.vertices[e.to]).squaredNorm();
+    candidates.push_back({length_squared, e.from, e.to, e.left, e.right});
   }
   std::stable_sort(candidates.begin(), candidates.end(), [](const Candidate& x, const Candidate& y) {
     return x.length_squared > y.length_squared;
@@ -653,29 +393,110 @@ void BooleanOp::Prepare(const Mesh& input) {
     }
     merged.push_back(f);
   }
+  return merged;
+}
+
+// The crossings to dissolve: those that only continue a straight chain between the same two
+// polygons.
+std::vector<bool> StraightCrossings(const std::vector<Polygon>& merged, const TriangleSoup& result,
+                                    const std::vector<Source>& sources) {
   const int num_result = static_cast<int>(result.vertices.size());
-  std::vector<std::pair<int, int>> neighbours(num_result, {-1, -1});
-  std::vector<bool> dissolve(num_result);
-  for (int v = 0; v < num_result; ++v) dissolve[v] = sources[v].kind == Source::kCrossing;
-  for (const Polygon& f : merged) {
-    const int k = static_cast<int>(f.size());
-    for (int i = 0; i < k; ++i) {
-      const int v = f[i];
-      const std::pair<int, int> around = std::minmax(f[(i + k - 1) % k], f[(i + 1) % k]);
-      if (neighbours[v].first < 0) neighbours[v] = around;
-      else if (neighbours[v] != around) dissolve[v] = false;
-    }
-  }
+  const HalfedgeTopology merged_topology(merged, num_result);
+  std::vector<bool> dissolve(num_result, false);
   for (int v = 0; v < num_result; ++v) {
-    if (!dissolve[v] || neighbours[v].first < 0) continue;
+    if (sources[v].kind != Source::kCrossing) continue;
+    // The same two neighbours in every polygon around v (at least one).
+    std::pair<int, int> neighbours = {-1, -1};
+    bool same = true;
+    for (const HalfedgeTopology::Corner& corner : merged_topology.VertexCorners(v)) {
+      const Polygon& f = merged[corner.face];
+      const int k = static_cast<int>(f.size());
+      const std::pair<int, int> around = std::minmax(f[(corner.corner + k - 1) % k], f[(corner.corner + 1) % k]);
+      if (neighbours.first < 0) neighbours = around;
+      else same = same && around == neighbours;
+    }
+    if (!same || neighbours.first < 0) continue;
     // Only a straight continuation (Blender's test: the turn's cosine within 1e-4 of 1); a
     // crossing where the chain bends, as across the diagonal of a non-planar quad, is kept.
     const Vec3d& p = result.vertices[v];
-    const Vec3d in = p - result.vertices[neighbours[v].first];
-    const Vec3d out = result.vertices[neighbours[v].second] - p;
+    const Vec3d in = p - result.vertices[neighbours.first];
+    const Vec3d out = result.vertices[neighbours.second] - p;
     const double cosine = in.dot(out) / std::max(in.norm() * out.norm(), 1e-300);
     dissolve[v] = cosine > 1 - 1e-4;
   }
+  return dissolve;
+}
+
+}  // namespace
+
+std::string SolidProblem(const Mesh& mesh) {
+  TriangleSoup soup;
+  soup.vertices = mesh.vertices;
+  for (const SourceTriangle& t : Triangulate(mesh)) soup.triangles.push_back(t.corners);
+  return CgalSolidProblem(soup, "the mesh");
+}
+
+BooleanOp::BooleanOp(const Json& params) {
+  ParamReader reader(params);
+  difference_ = reader.Word("operation", kOperations) == "DIFFERENCE";
+  primitive_ = reader.Word("primitive", kPrimitives);
+  const Vec3d size = reader.Vector3("size", 1e-6, 1e6);
+  const Vec3d rotation_deg = reader.Vector3("rotation_deg", -3600, 3600, Vec3d::Zero());
+  const Vec3d location = reader.Vector3("location", -1e6, 1e6, Vec3d::Zero());
+  reader.Finish();
+  const char* axes[3] = {"x", "y", "z"};
+  for (int i = 0; i < 3; ++i) AddParam(std::string("size_") + axes[i], 1e-6, 1e6, size[i], size[i]);
+  for (int i = 0; i < 3; ++i) {
+    const double radians = DegToRad(rotation_deg[i]);
+    AddParam(std::string("rotation_") + axes[i], -4 * kPi, 4 * kPi, radians, radians);
+  }
+  for (int i = 0; i < 3; ++i) AddParam(std::string("location_") + axes[i], -1e6, 1e6, location[i], location[i]);
+  template_ = primitive_ == "cube" ? MakeCube(1.0) : MakePrism(Segments(primitive_));
+}
+
+template <typename T>
+Vec3<T> BooleanOp::PrimitiveVertex(const T* p, const Eigen::Matrix<T, 3, 3>& rotation, int v) const {
+  const Vec3<T> scaled = template_.vertices[v].cast<T>().cwiseProduct(Vec3<T>(p[0], p[1], p[2]));
+  return rotation * scaled + Vec3<T>(p[6], p[7], p[8]);
+}
+
+void BooleanOp::Prepare(const Mesh& input) {
+  input_faces_ = input.faces;
+  if (input.faces.empty()) throw FieldError("operation", "the input mesh has no faces");
+  if (!HalfedgeTopology::Of(input)->Closed()) {
+    throw FieldError("operation", "the input mesh is not a closed, consistently oriented manifold");
+  }
+
+  // Both operands as triangle soups; the primitive's vertices follow the input's.
+  Mesh primitive = template_;
+  const Eigen::Matrix3d rotation = EulerXYZToMatrix(params_[3], params_[4], params_[5]);
+  for (int v = 0; v < primitive.NumVertices(); ++v) {
+    primitive.vertices[v] = PrimitiveVertex(params_.data(), rotation, v);
+  }
+  const std::vector<SourceTriangle> input_triangles = Triangulate(input);
+  const std::vector<SourceTriangle> primitive_triangles = Triangulate(primitive);
+  TriangleSoup a, b, result;
+  a.vertices = input.vertices;
+  for (const SourceTriangle& t : input_triangles) a.triangles.push_back(t.corners);
+  b.vertices = primitive.vertices;
+  for (const SourceTriangle& t : primitive_triangles) b.triangles.push_back(t.corners);
+  const std::string problem =
+      CgalBoolean(a, b, difference_ ? BooleanKind::kDifference : BooleanKind::kUnion, &result);
+  if (!problem.empty()) throw FieldError("operation", problem);
+
+  const Operands operands(a, input_triangles, b, primitive_triangles);
+  const std::vector<Source> sources = VertexSources(operands, result);
+  WeldCoincidentPoints(1e-3 * operands.tolerance, &result);
+  std::vector<int> source_face, source_triangle;
+  TriangleSources(operands, input.NumFaces(), result, sources, &source_face, &source_triangle);
+  RefuseCutNonPlanarFaces(input, result, source_face, sources);
+  MakeDelaunay(operands, source_triangle, &result);
+  const std::vector<Polygon> merged = MergeTriangles(input, primitive, result, source_face, sources);
+  const std::vector<bool> dissolve = StraightCrossings(merged, result, sources);
+
+  // The output: the merged polygons without their dissolved crossings, vertices numbered in
+  // order of first use.
+  const int num_result = static_cast<int>(result.vertices.size());
   std::vector<int> output_index(num_result, -1);
   sources_.clear();
   output_faces_.clear();

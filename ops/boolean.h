@@ -67,9 +67,9 @@ class BooleanOp : public OpBase<BooleanOp> {
   template <typename T>
   void Apply(const T* p, const T& gate, const Positions<T>& in, Positions<T>* out) const;
 
- private:
   // Where an output vertex comes from. For a crossing, `edge` is an edge of the input mesh
   // (on_primitive false) or of the primitive, and `plane` a triangle of the other mesh.
+  // (Public for the steps of Prepare in ops/boolean.cc.)
   struct Source {
     enum Kind : char { kInput, kPrimitive, kCrossing };
     Kind kind = kInput;
@@ -78,6 +78,8 @@ class BooleanOp : public OpBase<BooleanOp> {
     std::array<int, 2> edge = {-1, -1};
     std::array<int, 3> plane = {-1, -1, -1};
   };
+
+ private:
 
   // Primitive vertex v under the parameters p (rotation: the matrix of p[3..5]).
   template <typename T>

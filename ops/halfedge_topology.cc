@@ -17,7 +17,8 @@ void SilenceOpenMesh() {
   std::call_once(once, [] { omerr().disable(); });
 }
 
-bool RepeatsAVertex(const Polygon& face) {
+template <typename Face>
+bool RepeatsAVertex(const Face& face) {
   for (size_t i = 0; i < face.size(); ++i) {
     for (size_t j = i + 1; j < face.size(); ++j) {
       if (face[i] == face[j]) return true;
@@ -53,18 +54,29 @@ std::shared_ptr<const HalfedgeTopology> HalfedgeTopology::Of(const Mesh& mesh) {
 
 HalfedgeTopology::HalfedgeTopology(const std::vector<Polygon>& faces, int num_vertices)
     : num_vertices_(num_vertices) {
+  Build(faces);
+}
+
+HalfedgeTopology::HalfedgeTopology(const std::vector<std::array<int, 3>>& triangles, int num_vertices)
+    : num_vertices_(num_vertices) {
+  Build(triangles);
+}
+
+template <typename Faces>
+void HalfedgeTopology::Build(const Faces& faces) {
   SilenceOpenMesh();
   size_t num_corners = 0;
-  for (const Polygon& face : faces) num_corners += face.size();
-  mesh_.reserve(num_vertices, num_corners / 2 + 1, faces.size());
-  for (int v = 0; v < num_vertices; ++v) mesh_.add_vertex();
+  for (const auto& face : faces) num_corners += face.size();
+  mesh_.reserve(num_vertices_, num_corners / 2 + 1, faces.size());
+  for (int v = 0; v < num_vertices_; ++v) mesh_.add_vertex();
   std::vector<VertexHandle> handles;
-  for (const Polygon& face : faces) AddFace(face, &handles);
+  for (const auto& face : faces) AddFace(face, &handles);
   NumberCornersAndEdges(faces);
 }
 
 // Adds `face` as face mesh_.n_faces(): on its own vertices if OpenMesh takes it, else on copies.
-void HalfedgeTopology::AddFace(const Polygon& face, std::vector<VertexHandle>* handles) {
+template <typename Face>
+void HalfedgeTopology::AddFace(const Face& face, std::vector<VertexHandle>* handles) {
   handles->clear();
   for (int v : face) handles->push_back(VertexHandle(v));
   if (!RepeatsAVertex(face) && mesh_.add_face(*handles).is_valid()) return;
@@ -79,9 +91,10 @@ void HalfedgeTopology::AddFace(const Polygon& face, std::vector<VertexHandle>* h
 
 // Corners from each face's halfedges (OpenMesh's face halfedge runs from the last vertex to the
 // first), and edge numbers: OpenMesh's edge order, copies of one edge sharing its number.
-void HalfedgeTopology::NumberCornersAndEdges(const std::vector<Polygon>& faces) {
+template <typename Faces>
+void HalfedgeTopology::NumberCornersAndEdges(const Faces& faces) {
   face_offset_.assign(1, 0);
-  for (const Polygon& face : faces) face_offset_.push_back(face_offset_.back() + static_cast<int>(face.size()));
+  for (const auto& face : faces) face_offset_.push_back(face_offset_.back() + static_cast<int>(face.size()));
   corner_halfedge_.resize(face_offset_.back());
   halfedge_corner_.assign(mesh_.n_halfedges(), {-1, -1});
   for (int f = 0; f < static_cast<int>(faces.size()); ++f) {
@@ -142,6 +155,36 @@ int HalfedgeTopology::Edge(int a, int b) const {
     if (Original(mesh_.to_vertex_handle(h)) == b) edge = edge_of_openmesh_edge_[mesh_.edge_handle(h).idx()];
   });
   return edge;
+}
+
+int HalfedgeTopology::EdgeFace(int from, int to) const {
+  if (Manifold()) {
+    const HalfedgeHandle h = mesh_.find_halfedge(VertexHandle(from), VertexHandle(to));
+    return h.is_valid() ? halfedge_corner_[h.idx()].face : -1;
+  }
+  const int e = Edge(from, to);
+  if (e < 0) return -1;
+  int face = -1;
+  for (const Corner& corner : EdgeCorners(e)) {  // by face: the last one wins
+    if (CornerVertex(corner) == from) face = corner.face;
+  }
+  return face;
+}
+
+bool HalfedgeTopology::Closed() const {
+  if (Manifold()) {
+    // Every edge then has at most two corners, running opposite ways: closed when no halfedge
+    // lies on a boundary.
+    for (const Corner& corner : halfedge_corner_) {
+      if (corner.face < 0) return false;
+    }
+    return true;
+  }
+  for (int e = 0; e < num_edges_; ++e) {
+    const Corners corners = EdgeCorners(e);
+    if (corners.size() != 2 || CornerVertex(corners[0]) == CornerVertex(corners[1])) return false;
+  }
+  return true;
 }
 
 int HalfedgeTopology::CornerVertex(const Corner& corner) const {
@@ -206,59 +249,6 @@ std::vector<HalfedgeTopology::Corner> HalfedgeTopology::RegionBoundary(const std
     }
   }
   return boundary;
-}
-
-void OrientAgainstNeighbours(int num_oriented, std::vector<Polygon>* faces) {
-  // The edges of the faces to orient, listed at their lower vertex (a counting sort, so by face
-  // there): a shared edge's faces are found among a vertex's handful of entries.
-  struct EdgeUse {
-    int high, face;
-  };
-  const int num_faces = static_cast<int>(faces->size());
-  auto for_each_edge = [&](int f, auto visit) {
-    const Polygon& face = (*faces)[f];
-    for (size_t c = 0; c < face.size(); ++c) visit(face[c], face[(c + 1) % face.size()]);
-  };
-  int num_vertices = 0;
-  for (int f = num_oriented; f < num_faces; ++f) {
-    for (int v : (*faces)[f]) num_vertices = std::max(num_vertices, v + 1);
-  }
-  std::vector<int> first_use(num_vertices + 1, 0);  // vertex v's uses: first_use[v] ...
-  for (int f = num_oriented; f < num_faces; ++f) {
-    for_each_edge(f, [&](int a, int b) { ++first_use[std::min(a, b) + 1]; });
-  }
-  for (int v = 0; v < num_vertices; ++v) first_use[v + 1] += first_use[v];
-  std::vector<EdgeUse> uses(first_use.back());
-  std::vector<int> next_use(first_use.begin(), first_use.end() - 1);
-  for (int f = num_oriented; f < num_faces; ++f) {
-    for_each_edge(f, [&](int a, int b) { uses[next_use[std::min(a, b)]++] = {std::max(a, b), f}; });
-  }
-  std::vector<bool> oriented(num_faces, false);
-  std::vector<int> queue;  // breadth first: faces in the order they were oriented
-  for (int f = 0; f < num_oriented; ++f) {
-    oriented[f] = true;
-    queue.push_back(f);
-  }
-  for (size_t next = 0; next < queue.size(); ++next) {
-    // Face queue[next] is never reversed again, so for_each_edge reads it while others change.
-    for_each_edge(queue[next], [&](int a, int b) {
-      const int low = std::min(a, b), high = std::max(a, b);
-      if (low >= num_vertices) return;  // on no face to orient
-      for (int k = first_use[low]; k < first_use[low + 1]; ++k) {
-        const EdgeUse& use = uses[k];
-        if (use.high != high || oriented[use.face]) continue;
-        Polygon& other = (*faces)[use.face];
-        for (size_t d = 0; d < other.size(); ++d) {
-          if (other[d] == a && other[(d + 1) % other.size()] == b) {
-            std::reverse(other.begin(), other.end());
-            break;
-          }
-        }
-        oriented[use.face] = true;
-        queue.push_back(use.face);
-      }
-    });
-  }
 }
 
 }  // namespace opgraph

@@ -16,6 +16,7 @@
 #include <OpenMesh/Core/Mesh/PolyConnectivity.hh>
 #include <boost/container/small_vector.hpp>
 
+#include <array>
 #include <memory>
 #include <utility>
 #include <vector>
@@ -36,6 +37,8 @@ class HalfedgeTopology {
 
   // `faces` index vertices 0 .. num_vertices - 1 (#F loops of at least 3).
   HalfedgeTopology(const std::vector<Polygon>& faces, int num_vertices);
+  // The same over a triangle list (Boolean's triangulations), without copying it into polygons.
+  HalfedgeTopology(const std::vector<std::array<int, 3>>& triangles, int num_vertices);
   // The half-edge mesh of `mesh`'s faces, built once per distinct face list: a search prepares
   // many ops (every choice it tries) on one mesh, and building costs more than most topology
   // passes. The last kCached face lists are kept (thread-safe).
@@ -49,6 +52,11 @@ class HalfedgeTopology {
 
   // The edge joining a and b (either way), or -1.
   int Edge(int a, int b) const;
+  // The face whose corner runs from -> to, or -1 (the last such face where several run it).
+  int EdgeFace(int from, int to) const;
+  // Whether every edge has exactly two corners, running opposite ways: a closed, consistently
+  // oriented surface (vertices may be pinched; an edge from a vertex to itself is never closed).
+  bool Closed() const;
   // The edge's vertices, directed as its first corner.
   std::pair<int, int> EdgeVertices(int e) const { return edge_vertices_[e]; }
   // The edge of corner c of face f.
@@ -75,8 +83,13 @@ class HalfedgeTopology {
   // Calls visit(halfedge) for each OpenMesh halfedge leaving v or one of its copies.
   template <typename Visit>
   void ForEachOutgoing(int v, Visit visit) const;
-  void AddFace(const Polygon& face, std::vector<VertexHandle>* handles);
-  void NumberCornersAndEdges(const std::vector<Polygon>& faces);
+  // Faces: std::vector<Polygon> or std::vector<std::array<int, 3>>.
+  template <typename Faces>
+  void Build(const Faces& faces);
+  template <typename Face>
+  void AddFace(const Face& face, std::vector<VertexHandle>* handles);
+  template <typename Faces>
+  void NumberCornersAndEdges(const Faces& faces);
 
   OpenMesh::PolyConnectivity mesh_;
   int num_vertices_ = 0;
@@ -90,12 +103,5 @@ class HalfedgeTopology {
   std::vector<std::pair<int, int>> edge_vertices_;
   int num_edges_ = 0;
 };
-
-// Reverses faces[num_oriented ..] as needed so that each runs the edge by which it is first
-// reached the other way from the face reaching it: breadth first from faces 0 .. num_oriented - 1,
-// whose winding is kept, faces by index and their edges by corner. A face no chain reaches keeps
-// its winding. For Bevel's new faces against the rebuilt originals: only the faces to orient are
-// indexed (their edges listed by lower vertex), far cheaper than a half-edge mesh of all faces.
-void OrientAgainstNeighbours(int num_oriented, std::vector<Polygon>* faces);
 
 }  // namespace opgraph

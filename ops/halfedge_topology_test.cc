@@ -1,6 +1,6 @@
 // HalfedgeTopology against brute force over the face list, on manifold, open and non-manifold
 // inputs (a third face on an edge, a flipped face, two closed fans at one vertex, a face that
-// repeats a vertex); OrientAgainstNeighbours against a breadth-first pass over an edge map.
+// repeats a vertex), and over triangle lists.
 #include "ops/halfedge_topology.h"
 
 #include <gtest/gtest.h>
@@ -58,6 +58,28 @@ void ExpectMatchesBruteForce(const std::vector<Polygon>& faces, int num_vertices
       if (!edge_corners.count(Undirected(v, w))) EXPECT_EQ(topology.Edge(v, w), -1);
     }
   }
+  // Directed edge -> face (the last face running it) and closedness (each directed edge once,
+  // and its reverse once), as Boolean's maps had them.
+  std::map<std::pair<int, int>, int> face_of_directed, directed_count;
+  for (int f = 0; f < static_cast<int>(faces.size()); ++f) {
+    const int n = static_cast<int>(faces[f].size());
+    for (int c = 0; c < n; ++c) {
+      face_of_directed[{faces[f][c], faces[f][(c + 1) % n]}] = f;
+      ++directed_count[{faces[f][c], faces[f][(c + 1) % n]}];
+    }
+  }
+  bool closed = true;
+  for (const auto& [key, count] : directed_count) {
+    const auto reverse = directed_count.find({key.second, key.first});
+    closed = closed && key.first != key.second && count == 1 && reverse != directed_count.end() && reverse->second == 1;
+  }
+  EXPECT_EQ(topology.Closed(), closed);
+  for (int v = 0; v < num_vertices; ++v) {
+    for (int w = 0; w < num_vertices; ++w) {
+      const auto it = face_of_directed.find({v, w});
+      EXPECT_EQ(topology.EdgeFace(v, w), it == face_of_directed.end() ? -1 : it->second) << v << " -> " << w;
+    }
+  }
   // Region boundaries: every prefix of the faces as a region.
   for (size_t size = 1; size <= faces.size(); ++size) {
     std::vector<int> region;
@@ -79,48 +101,35 @@ void ExpectMatchesBruteForce(const std::vector<Polygon>& faces, int num_vertices
   }
 }
 
-// The orientation pass Bevel had before OrientAgainstNeighbours: an edge -> faces map.
-std::vector<Polygon> OrientedByEdgeMap(int num_oriented, std::vector<Polygon> faces) {
-  std::map<std::pair<int, int>, std::vector<int>> users;
-  for (int f = 0; f < static_cast<int>(faces.size()); ++f) {
-    for (size_t c = 0; c < faces[f].size(); ++c) users[Undirected(faces[f][c], faces[f][(c + 1) % faces[f].size()])].push_back(f);
-  }
-  std::vector<bool> oriented(faces.size(), false);
-  std::vector<int> queue;
-  for (int f = 0; f < num_oriented; ++f) {
-    oriented[f] = true;
-    queue.push_back(f);
-  }
-  for (size_t next = 0; next < queue.size(); ++next) {
-    const Polygon face = faces[queue[next]];
-    for (size_t c = 0; c < face.size(); ++c) {
-      const int a = face[c], b = face[(c + 1) % face.size()];
-      for (int g : users[Undirected(a, b)]) {
-        if (oriented[g]) continue;
-        for (size_t d = 0; d < faces[g].size(); ++d) {
-          if (faces[g][d] == a && faces[g][(d + 1) % faces[g].size()] == b) {
-            std::reverse(faces[g].begin(), faces[g].end());
-            break;
-          }
-        }
-        oriented[g] = true;
-        queue.push_back(g);
-      }
-    }
-  }
-  return faces;
-}
-
-void ExpectOrientedAsByEdgeMap(int num_oriented, const std::vector<Polygon>& faces) {
-  std::vector<Polygon> got = faces;
-  OrientAgainstNeighbours(num_oriented, &got);
-  EXPECT_EQ(got, OrientedByEdgeMap(num_oriented, faces));
-}
-
 TEST(HalfedgeTopology, ClosedCube) {
   const Mesh cube = MakeCube(2);
   ExpectMatchesBruteForce(cube.faces, cube.NumVertices());
   EXPECT_TRUE(HalfedgeTopology(cube.faces, cube.NumVertices()).Manifold());
+  EXPECT_TRUE(HalfedgeTopology(cube.faces, cube.NumVertices()).Closed());
+}
+
+TEST(HalfedgeTopology, TriangleList) {
+  // The cube split along its 0-2 diagonals, with one triangle repeated (a third face on edges).
+  const Mesh cube = MakeCube(2);
+  std::vector<std::array<int, 3>> triangles;
+  for (const Polygon& f : cube.faces) {
+    triangles.push_back({f[0], f[1], f[2]});
+    triangles.push_back({f[0], f[2], f[3]});
+  }
+  for (const bool repeat : {false, true}) {
+    if (repeat) triangles.push_back(triangles[3]);
+    std::vector<Polygon> polygons;
+    for (const auto& t : triangles) polygons.push_back({t[0], t[1], t[2]});
+    ExpectMatchesBruteForce(polygons, cube.NumVertices());
+    const HalfedgeTopology from_triangles(triangles, cube.NumVertices());
+    const HalfedgeTopology from_polygons(polygons, cube.NumVertices());
+    ASSERT_EQ(from_triangles.NumEdges(), from_polygons.NumEdges());
+    for (int e = 0; e < from_polygons.NumEdges(); ++e) {
+      EXPECT_EQ(from_triangles.EdgeVertices(e), from_polygons.EdgeVertices(e));
+    }
+    EXPECT_EQ(from_triangles.Closed(), !repeat);
+    EXPECT_EQ(from_triangles.EdgeFace(triangles[3][0], triangles[3][1]), repeat ? 12 : 3);
+  }
 }
 
 TEST(HalfedgeTopology, OpenGrid) {
@@ -146,26 +155,6 @@ TEST(HalfedgeTopology, TwoClosedFansAtOneVertex) {
 
 TEST(HalfedgeTopology, FaceRepeatingAVertex) {
   ExpectMatchesBruteForce({{0, 1, 2, 3}, {1, 4, 1, 2}}, 5);
-}
-
-TEST(OrientAgainstNeighbours, MatchesAnEdgeMapPass) {
-  // A 3 x 1 strip of quads, the first oriented, the others wound either way.
-  ExpectOrientedAsByEdgeMap(1, {{0, 1, 5, 4}, {1, 2, 6, 5}, {6, 7, 3, 2}});
-  ExpectOrientedAsByEdgeMap(1, {{0, 1, 5, 4}, {5, 6, 2, 1}, {2, 3, 7, 6}});
-  // A third face on an edge, a face reached from two sides, and a face nothing reaches.
-  ExpectOrientedAsByEdgeMap(1, {{0, 1, 2}, {0, 1, 3}, {1, 0, 4}, {3, 1, 4}, {5, 6, 7}});
-  // Two oriented faces; a fan of triangles between them.
-  ExpectOrientedAsByEdgeMap(2, {{0, 1, 2, 3}, {4, 5, 6, 7}, {0, 4, 1}, {5, 1, 4}, {1, 5, 2}, {6, 2, 5}});
-  // The cube with its faces' windings mixed, from one face.
-  Mesh cube = MakeCube(2);
-  for (size_t f = 1; f < cube.faces.size(); f += 2) std::reverse(cube.faces[f].begin(), cube.faces[f].end());
-  ExpectOrientedAsByEdgeMap(1, cube.faces);
-  // ... comes out consistent: every edge run once each way.
-  OrientAgainstNeighbours(1, &cube.faces);
-  std::set<std::pair<int, int>> directed;
-  for (const Polygon& face : cube.faces) {
-    for (size_t c = 0; c < face.size(); ++c) EXPECT_TRUE(directed.insert({face[c], face[(c + 1) % face.size()]}).second);
-  }
 }
 
 }  // namespace

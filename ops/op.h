@@ -11,6 +11,7 @@
 #include <vector>
 
 #include "core/mesh.h"
+#include "ops/limits.h"
 #include "ops/params.h"
 
 namespace opgraph {
@@ -32,11 +33,6 @@ struct ParamSpec {
   double identity;
 };
 
-// The most faces one op may output, and all steps of a sequence together: beyond them a
-// sequence (20 Subdivisions, each in range) would exhaust memory before it fails.
-constexpr int64_t kMaxOpFaces = 2000000;
-constexpr int64_t kMaxSequenceFaces = 4 * kMaxOpFaces;
-
 // How an op appears in Blender.
 enum class BlenderStage {
   kMeshEdit,  // edits the mesh data: the modifiers above it are applied first
@@ -57,6 +53,11 @@ class Op {
   // Throws FieldError when a target does not exist on `input`.
   virtual void Prepare(const Mesh& input) = 0;
   const std::vector<Polygon>& output_faces() const { return output_faces_; }
+  // The faces and face corners Prepare would output on an input with `faces` faces and
+  // `corners` corners, when the op knows them from the counts alone (Subdivision: 4x a level);
+  // false otherwise. EvaluateSequence refuses a step above its limit before the step, and before
+  // the steps ahead of it in a run of such ops, allocate anything.
+  virtual bool PredictOutputFaces(int64_t* /*faces*/, int64_t* /*corners*/) const { return false; }
   // Output topology at `gate`: output_faces(), except for an op whose gate is a hard switch
   // (Boolean: the identity below 0.5), where Evaluate writes this topology's positions.
   virtual const std::vector<Polygon>& OutputFaces(double /*gate*/) const { return output_faces_; }

@@ -118,11 +118,27 @@ Mesh ApplyOp(Op* op, double gate, const Mesh& input) {
 }
 
 std::vector<Mesh> EvaluateSequence(Sequence* sequence) {
+  const int64_t max_faces = sequence->max_faces;
+  const int64_t max_total_faces = 4 * max_faces;
+  auto too_large = [&](size_t i, const Op& op, const std::string& what) {
+    return SequenceError(OpLabel(i, op.Name()) + ": output too large: " + what + " --max-faces " +
+                         std::to_string(max_faces));
+  };
   std::vector<Mesh> steps;
   Mesh current = sequence->StartMesh();
   int64_t total_faces = 0;
   for (size_t i = 0; i < sequence->ops.size(); ++i) {
     Op& op = *sequence->ops[i];
+    // Refused before the op allocates, where it and the ops after it know their sizes
+    // beforehand (20 Subdivisions fail at once, not after 9 of them).
+    int64_t faces_ahead = static_cast<int64_t>(current.faces.size()), corners_ahead = 0;
+    for (const Polygon& face : current.faces) corners_ahead += static_cast<int64_t>(face.size());
+    for (size_t j = i; j < sequence->ops.size() && sequence->ops[j]->PredictOutputFaces(&faces_ahead, &corners_ahead);
+         ++j) {
+      if (faces_ahead > max_faces) {
+        throw too_large(j, *sequence->ops[j], "would make " + std::to_string(faces_ahead) + " faces, above");
+      }
+    }
     try {
       current = ApplyOp(&op, sequence->gates[i], current);
     } catch (const FieldError& e) {
@@ -130,11 +146,11 @@ std::vector<Mesh> EvaluateSequence(Sequence* sequence) {
     }
     const std::string problem = current.Validate();
     if (!problem.empty()) throw SequenceError(OpLabel(i, op.Name()) + ": result invalid: " + problem);
-    total_faces += static_cast<int64_t>(current.faces.size());
-    if (static_cast<int64_t>(current.faces.size()) > kMaxOpFaces || total_faces > kMaxSequenceFaces) {
-      throw SequenceError(OpLabel(i, op.Name()) + ": output too large: " + std::to_string(current.faces.size()) +
-                          " faces (" + std::to_string(total_faces) + " over the steps so far; the limits are " +
-                          std::to_string(kMaxOpFaces) + " and " + std::to_string(kMaxSequenceFaces) + ")");
+    const int64_t faces = static_cast<int64_t>(current.faces.size());
+    total_faces += faces;
+    if (faces > max_faces) throw too_large(i, op, std::to_string(faces) + " faces, above");
+    if (total_faces > max_total_faces) {
+      throw too_large(i, op, std::to_string(total_faces) + " faces over the steps so far, above 4 times");
     }
     steps.push_back(current);
   }

@@ -2,6 +2,7 @@
 // File format: docs/sequence-format.md.
 #pragma once
 
+#include <cstdint>
 #include <memory>
 #include <string>
 #include <vector>
@@ -21,6 +22,9 @@ struct Sequence {
   // One per op (or none): a pinned op keeps its parameters and gate when the fitter refits the
   // others (the editing workflow: fix one step by hand, let the rest adapt).
   std::vector<bool> pinned;
+  // The most faces a step's output may have (the tools' --max-faces; not part of the file):
+  // EvaluateSequence refuses a larger step, and steps that add up to 4 times as many.
+  int64_t max_faces = kDefaultMaxFaces;
 
   bool IsPinned(size_t op) const { return op < pinned.size() && pinned[op]; }
 
@@ -38,8 +42,8 @@ Json SequenceToJson(const Sequence& sequence);
 Mesh ApplyOp(Op* op, double gate, const Mesh& input);
 
 // Runs every op's topology and geometry pass with doubles. Returns the mesh after each step
-// (#ops entries). Throws SequenceError when a target does not exist at its step or the result
-// is not finite.
+// (#ops entries). Throws SequenceError when a target does not exist at its step, the result
+// is not finite, or a step is larger than sequence->max_faces allows.
 std::vector<Mesh> EvaluateSequence(Sequence* sequence);
 
 }  // namespace opgraph

@@ -76,14 +76,22 @@ SubdivisionOp::SubdivisionOp(const Json& params) {
   AddParam("level_blend", 0, 1, 0, 1);
 }
 
+bool SubdivisionOp::PredictOutputFaces(int64_t* faces, int64_t* corners) const {
+  // The first level splits an n-gon into n quads, each later level a quad into 4.
+  *faces = *corners << (2 * (levels_ - 1));
+  *corners = 4 * *faces;
+  return true;
+}
+
 void SubdivisionOp::Prepare(const Mesh& input) {
   if (input.faces.empty()) throw FieldError("levels", "the input mesh has no faces");
-  // The first level splits an n-gon into n quads, each later level a quad into 4.
-  int64_t faces = 0;
-  for (const Polygon& face : input.faces) faces += static_cast<int64_t>(face.size()) << (2 * (levels_ - 1));
-  if (faces > kMaxOpFaces) {
+  // EvaluateSequence checks its own limit first; this guards callers that prepare ops directly
+  // (the search's layouts).
+  int64_t faces = static_cast<int64_t>(input.faces.size()), corners = 0;
+  for (const Polygon& face : input.faces) corners += static_cast<int64_t>(face.size());
+  if (PredictOutputFaces(&faces, &corners) && faces > kMaxFacesCeiling) {
     throw FieldError("levels", "would make " + std::to_string(faces) + " faces, above the limit of " +
-                                   std::to_string(kMaxOpFaces));
+                                   std::to_string(kMaxFacesCeiling));
   }
   num_input_vertices_ = input.NumVertices();
   const std::unique_ptr<TopologyRefiner> catmark = RefineUniformly(input, Sdc::SCHEME_CATMARK, levels_);

@@ -22,6 +22,7 @@ class SubdivisionOp : public OpBase<SubdivisionOp> {
 
   std::string Name() const override { return "Subdivision"; }
   void Prepare(const Mesh& input) override;
+  bool PredictOutputFaces(int64_t* faces, int64_t* corners) const override;
   Json ParamsToJson() const override;
   std::string BlenderCode() const override;
   BlenderStage Stage() const override { return BlenderStage::kModifier; }

@@ -27,7 +27,9 @@ int64_t Work(const FitSummary& summary) {
 }  // namespace
 
 Evaluator::Evaluator(const Target& target, const ZeroShotOptions& options)
-    : target_(target), options_(options), start_(std::chrono::steady_clock::now()) {
+    : target_(target),
+      options_(options),
+      start_(options.time_budget_start.value_or(std::chrono::steady_clock::now())) {
   search_options_.seed = options.seed;
   // One thread per fit: Ceres' threads sum a cost in an order that depends on scheduling,
   // which would make a fit (and so the search) differ between runs.
@@ -46,8 +48,10 @@ Evaluator::Evaluator(const Target& target, const ZeroShotOptions& options)
 }
 
 FitterOptions Evaluator::FitOptions(FitPrecision precision, const Json& document, const Vec3d& half_extent) const {
-  return WithDomainRules(precision == FitPrecision::kSearch ? search_options_ : final_options_, document,
-                         half_extent);
+  FitterOptions options = WithDomainRules(precision == FitPrecision::kSearch ? search_options_ : final_options_,
+                                          document, half_extent);
+  options.max_seconds = FitMaxSeconds(kFitsShare);
+  return options;
 }
 
 // Runs on a worker thread: touches no member that changes during a batch.
@@ -58,6 +62,7 @@ Evaluator::Outcome Evaluator::FitUncached(const Layout& layout, FitPrecision pre
   const Json document = layout.Document();
   try {
     Sequence sequence = ParseSequence(document);
+    sequence.max_faces = options_.max_faces;
     outcome.fitted = true;
     const FitSummary summary =
         FitSequence(target_, &sequence, FitOptions(precision, document, layout.half_extent));
@@ -168,6 +173,20 @@ bool Evaluator::InBudget() const {
     search_end_ = SearchEnd::kTimeBudget;
   }
   return search_end_ == SearchEnd::kComplete;
+}
+
+double Evaluator::SecondsLeft(double share) const {
+  if (!(options_.time_budget_seconds > 0)) return std::numeric_limits<double>::infinity();
+  return std::max(0.0, share * options_.time_budget_seconds - Seconds());
+}
+
+double Evaluator::FitMaxSeconds(double share) const {
+  return options_.time_budget_seconds > 0 ? std::max(1e-6, SecondsLeft(share)) : 0.0;
+}
+
+void Evaluator::NoteCutByTime(const std::string& step, const std::string& line) {
+  cut_by_time_.push_back(step);
+  Note(line);
 }
 
 double Evaluator::Seconds() const {

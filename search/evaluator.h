@@ -47,6 +47,20 @@ class Evaluator {
   // Proposals stop at this share of the budget; the finishing fits (gate pruning, polishing,
   // simplification: 20-40 s on a 20-op sequence) take the rest.
   static constexpr double kSearchShare = 0.65;
+  // Under a time cap, the shares of it by which each finishing step ends (the fits are cut, the
+  // optional steps skipped), so the run with its outputs ends within the cap: every fit (the
+  // search's last batch, gate pruning, polishing) by kFitsShare, Simplify by kSimplifyShare,
+  // the free-form fit by kFreeformShare. The rest is for writing the outputs.
+  static constexpr double kFitsShare = 0.8, kSimplifyShare = 0.87, kFreeformShare = 0.93;
+  // Seconds left until `share` of the time cap (0 when spent); infinite without a cap.
+  double SecondsLeft(double share) const;
+  bool TimeIsUp(double share) const { return !(SecondsLeft(share) > 0); }
+  // The max_seconds of a fit that must end by `share` of the time cap: 0 (none) without a cap;
+  // a microsecond once it is spent (the fit is cut at once).
+  double FitMaxSeconds(double share) const;
+  // A finishing step cut or skipped by the time cap: noted in the log and in the result.
+  void NoteCutByTime(const std::string& step, const std::string& line);
+  const std::vector<std::string>& cut_by_time() const { return cut_by_time_; }
   // Whether proposals may still be fitted: the search's share of the work budget and of the
   // time cap are not spent, and the progress callback has not cancelled.
   bool InBudget() const;
@@ -103,6 +117,7 @@ class Evaluator {
   int best_ops_ = 0;
   double best_loss_ = std::numeric_limits<double>::infinity();
   std::vector<std::string> decisions_;
+  std::vector<std::string> cut_by_time_;
 };
 
 }  // namespace opgraph

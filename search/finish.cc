@@ -31,6 +31,11 @@ Json Simplify(Evaluator* evaluator, Json document) {
   double current = chamfer(document);
   for (int k = static_cast<int>(document["operations"].size()) - 1; k >= 0; --k) {
     if (document["operations"].size() == 1) break;
+    if (evaluator->TimeIsUp(Evaluator::kSimplifyShare)) {
+      evaluator->NoteCutByTime("simplify", "simplify: stopped by the time budget; ops 0 to " + std::to_string(k) +
+                                               " not tried");
+      break;
+    }
     Json candidate = document;
     const std::string name = candidate["operations"][k]["op"];
     candidate["operations"].erase(static_cast<size_t>(k));
@@ -82,10 +87,15 @@ Json ScaleFirstIfSame(const Json& document, double diagonal) {
 Json PruneOrPolish(Evaluator* evaluator, const Trial& best, double* loss) {
   *loss = best.loss;
   const Json searched = best.layout.Document();
+  if (evaluator->TimeIsUp(Evaluator::kFitsShare)) {
+    evaluator->NoteCutByTime("gate fit", "prune: skipped with the polishing fit, the time budget is spent");
+    return searched;
+  }
   Json document = searched;
   try {
     Sequence sequence = ParseSequence(searched);
     const FitSummary summary = evaluator->FitGates(&sequence, searched, best.layout.half_extent);
+    if (summary.cut_by_time) evaluator->NoteCutByTime("gate fit", "prune: the gate fit was cut by the time budget");
     Json fitted = SequenceToJson(sequence);
     Sequence replay = ParseSequence(fitted);
     const bool breaks_replay = BreaksReplay(fitted, EvaluateSequence(&replay));
@@ -101,7 +111,9 @@ Json PruneOrPolish(Evaluator* evaluator, const Trial& best, double* loss) {
   } catch (const std::runtime_error& e) {
     evaluator->Note(std::string("final gate fit failed, kept the searched sequence: ") + e.what());
   }
-  if (document == searched) {
+  if (document == searched && evaluator->TimeIsUp(Evaluator::kFitsShare)) {
+    evaluator->NoteCutByTime("polish", "polish: skipped, the time budget is spent");
+  } else if (document == searched) {
     const Trial polished = evaluator->Fit(best.layout, FitPrecision::kFinal);
     if (polished.ok) document = polished.layout.Document(), *loss = polished.loss;
   }
@@ -121,7 +133,9 @@ ZeroShotResult Finish(Evaluator* evaluator, const Trial& best) {
     evaluator->BeginStage("finish: simplifying", 0.92);
     document = Simplify(evaluator, document);
     document = ScaleFirstIfSame(document, 2.0 * best.layout.half_extent.norm());
-    if (evaluator->options().freeform) {
+    if (evaluator->options().freeform && evaluator->TimeIsUp(Evaluator::kFreeformShare)) {
+      evaluator->NoteCutByTime("freeform", "freeform: skipped, the time budget is spent");
+    } else if (evaluator->options().freeform) {
       evaluator->BeginStage("finish: free-form", 0.95);
       const FreeformOutcome outcome = AddFreeformDetail(evaluator, document);
       if (outcome.used) document = outcome.document, loss = outcome.loss, freeform = true;
@@ -137,6 +151,7 @@ ZeroShotResult Finish(Evaluator* evaluator, const Trial& best) {
   result.end = evaluator->search_end();
   result.search_complete = result.end == SearchEnd::kComplete;
   result.freeform = freeform;
+  result.cut_by_time = evaluator->cut_by_time();
   if (!result.search_complete) {
     evaluator->Note(std::string("the ") + SearchEndName(result.end) + " ended the search before every proposal was tried");
   }

@@ -88,6 +88,7 @@ std::optional<Candidate> FitCandidate(const Evaluator& evaluator, const Json& do
   FreeformOptions options;
   options.seed = evaluator.options().seed;
   options.num_threads = 1;  // the candidates run in parallel; one thread each keeps them deterministic
+  options.max_seconds = evaluator.FitMaxSeconds(Evaluator::kFreeformShare);
   const FreeformResult fit = FitDisplacements(evaluator.target(), cage, tail, options);
   std::vector<build::DisplaceGroup> groups;
   for (int v = 0; v < cage.NumVertices(); ++v) {

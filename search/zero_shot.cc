@@ -229,6 +229,7 @@ std::string ZeroShotOptions::Check() const {
   if (work_budget < 1) return "work budget must be positive";
   if (!(time_budget_seconds >= 0)) return "time budget must be positive, or 0 for none";
   if (max_ops < 3) return "max ops must be at least 3";
+  if (max_faces < 1 || max_faces > kMaxFacesCeiling) return "max faces must be in [1, " + std::to_string(kMaxFacesCeiling) + "]";
   if (!(min_relative_gain >= 0 && min_relative_gain < 1)) return "min relative gain must be in [0, 1)";
   if (num_threads < 1) return "threads must be at least 1";
   return "";

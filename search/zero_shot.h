@@ -17,12 +17,15 @@
 // policy (search/policy.h), the fits (search/evaluator.h), the finishing steps (search/finish.h).
 #pragma once
 
+#include <chrono>
 #include <cstdint>
+#include <optional>
 #include <functional>
 #include <iosfwd>
 #include <string>
 #include <vector>
 
+#include "ops/limits.h"
 #include "ops/params.h"
 #include "residuals/correspondence_cost.h"
 #include "solver/fitter.h"
@@ -57,7 +60,12 @@ struct ZeroShotOptions {
   // A cap on wall time, in seconds (0: none). When the cap ends the search before the work
   // budget, the result depends on the machine's speed and load (metrics.json says which ended it).
   double time_budget_seconds = 0;
+  // When the cap's clock started (unset: when the search starts). A tool passes its own start,
+  // so reading the target counts too and the whole run ends within the cap.
+  std::optional<std::chrono::steady_clock::time_point> time_budget_start;
   int max_ops = 24;
+  // The most faces a step may have (Sequence::max_faces): a layout beyond it is not fitted.
+  int64_t max_faces = kDefaultMaxFaces;
   double min_relative_gain = 0.08;  // a proposal must lower the loss by this fraction
   uint64_t seed = 1;
   // Independent candidate fits run on this many threads; each fit runs on one (so the result
@@ -93,6 +101,9 @@ struct ZeroShotResult {
   SearchEnd end = SearchEnd::kComplete;
   bool search_complete = true;         // every proposal was tried (end == kComplete)
   bool freeform = false;               // whether free-form displacements were kept
+  // The finishing steps the time cap cut or skipped ("gate fit", "polish", "simplify",
+  // "freeform"), in order; empty without a cap.
+  std::vector<std::string> cut_by_time;
 };
 
 // How well work tracks wall time over `costs` (fits of at least 1 ms): the mean time of a work

@@ -34,6 +34,7 @@ std::string FitterOptions::Check() const {
   if (!(initial_trust_region_radius > 0)) return "initial_trust_region_radius must be > 0";
   if (!(min_relative_improvement >= 0)) return "min_relative_improvement must be >= 0";
   if (num_threads < 1) return "num_threads must be >= 1";
+  if (!(max_seconds >= 0)) return "max_seconds must be >= 0";
   for (const ParameterRangeRule& rule : domain_rules) {
     if (!(rule.weight >= 0) || !(rule.lower <= rule.upper)) return "domain rule: need weight >= 0 and lower <= upper";
   }
@@ -455,6 +456,7 @@ double Fitter::Solve(const Correspondences& correspondences, double sparsity_wei
     // cautious (large early steps tend to jump between near-equivalent configurations, such as
     // an inset's depth traded for an extrusion's height), later ones where the last ended.
     solver_options.initial_trust_region_radius = trust_region_radius_;
+    if (deadline_.limited()) solver_options.max_solver_time_in_seconds = deadline_.SecondsLeft();
     ceres::Solver::Summary solver_summary;
     ceres::Solve(solver_options, &problem, &solver_summary);
     summary->inner_iterations += static_cast<int>(solver_summary.iterations.size()) - 1;
@@ -484,7 +486,7 @@ double Fitter::Solve(const Correspondences& correspondences, double sparsity_wei
   }
   constexpr double kBeta1 = 0.9, kBeta2 = 0.999, kEpsilon = 1e-8;
   double loss = 0;
-  for (int step = 1; step <= options_.adam_iterations; ++step) {
+  for (int step = 1; step <= options_.adam_iterations && !deadline_.Passed(); ++step) {
     program_->PrepareForEvaluation(true, true);
     loss = EvaluateObjective(*program_, objective, &gradient, &r, &jac);
     if (!std::isfinite(loss)) break;
@@ -588,7 +590,7 @@ double Fitter::RunStage(double sparsity_weight, FitSummary* summary) {
         best_reproducible_values = best_values;
       }
     }
-    if (!improving) break;
+    if (!improving || deadline_.Passed()) break;
     const int iterations_before = summary->inner_iterations;
     const double solved = Solve(correspondences, sparsity_weight, summary);
     ++summary->outer_iterations;
@@ -688,6 +690,7 @@ void Fitter::Finalise(FitSummary* summary) {
 FitSummary Fitter::Fit() {
   FitSummary summary;
   start_time_ = Now();
+  deadline_ = Deadline(options_.max_seconds);
   retired_jacobian_evaluations_ = -program_->num_jacobian_evaluations();  // count from here
   summary.initial_loss = CurrentLoss();
   if (options_.fit_gates) {
@@ -717,6 +720,7 @@ FitSummary Fitter::Fit() {
   summary.num_parameters = program_->num_columns();
   summary.num_vertices = static_cast<int>(program_->positions().size());
   summary.seconds = Now() - start_time_;
+  summary.cut_by_time = deadline_.Passed();
   return summary;
 }
 

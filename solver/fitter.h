@@ -40,6 +40,7 @@
 
 #include <ceres/problem.h>
 
+#include "core/deadline.h"
 #include "residuals/correspondence_cost.h"
 #include "program/program.h"
 #include "solver/target.h"
@@ -76,6 +77,10 @@ struct FitterOptions {
   // Extrude ops given the Boolean weight beta (only the last op; solver/boolean_weight.h).
   std::vector<int> boolean_weight_ops;
   std::ostream* progress = nullptr;  // one line per solve when set
+  // A cap on Fit()'s wall time in seconds (0: none, the default: then the result does not
+  // depend on time). At the cap the correspondence updates stop and the solve under way is cut
+  // (Ceres' max_solver_time_in_seconds); the best parameters so far are kept.
+  double max_seconds = 0;
   // Empty when valid, else the problem.
   std::string Check() const;
 };
@@ -90,6 +95,7 @@ struct FitSummary {
   int num_parameters = 0;  // columns
   int num_vertices = 0;    // of the output
   double seconds = 0;
+  bool cut_by_time = false;  // FitterOptions::max_seconds ended the fit early
   std::vector<double> gates_before_finalisation;  // per op of the input sequence
   std::vector<int> pruned_ops;                    // indices in the input sequence
   // Per branch choice (options.branches order): the weights when committed, and the option
@@ -170,6 +176,7 @@ class Fitter {
   int retired_jacobian_evaluations_ = 0;  // by programs replaced during the fit  // blocks held constant in the current stage
   uint64_t update_count_ = 0;
   double start_time_ = 0;
+  Deadline deadline_;  // FitterOptions::max_seconds from Fit()'s start
 };
 
 // Runs Fitter(target, sequence, options).Fit().

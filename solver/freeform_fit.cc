@@ -7,6 +7,7 @@
 #include <map>
 #include <set>
 
+#include "core/deadline.h"
 #include "core/nearest.h"
 #include "residuals/displacement_cost.h"
 
@@ -103,6 +104,7 @@ std::string FreeformOptions::Check() const {
   if (max_outer_iterations < 1 || max_inner_iterations < 1) return "free-form: iterations must be at least 1";
   if (!(smoothness_weight >= 0)) return "free-form: smoothness weight must be >= 0";
   if (num_threads < 1) return "free-form: threads must be at least 1";
+  if (!(max_seconds >= 0)) return "free-form: max seconds must be >= 0";
   return "";
 }
 
@@ -121,7 +123,8 @@ FreeformResult FitDisplacements(const Target& target, const Mesh& cage, const Af
     return tail.Apply(moved);
   };
   FreeformResult result;
-  for (int outer = 0; outer < options.max_outer_iterations; ++outer) {
+  const Deadline deadline(options.max_seconds);
+  for (int outer = 0; outer < options.max_outer_iterations && (outer == 0 || !deadline.Passed()); ++outer) {
     const Positions<double> positions = displaced_output();
     const std::vector<Correspondence> correspondences =
         FindCorrespondences(target, tail, undisplaced, positions, triangles, options, options.seed + 7919 * outer);
@@ -153,6 +156,7 @@ FreeformResult FitDisplacements(const Target& target, const Mesh& cage, const Af
     solver_options.max_num_iterations = options.max_inner_iterations;
     solver_options.num_threads = options.num_threads;
     solver_options.logging_type = ceres::SILENT;
+    if (deadline.limited()) solver_options.max_solver_time_in_seconds = deadline.SecondsLeft();
     ceres::Solver::Summary summary;
     ceres::Solve(solver_options, &problem, &summary);
   }

@@ -26,6 +26,8 @@ struct FreeformOptions {
   double smoothness_weight = 0.005;
   uint64_t seed = 1;
   int num_threads = 1;
+  // A cap on the fit's wall time in seconds (0: none), as FitterOptions::max_seconds.
+  double max_seconds = 0;
   // Empty when valid, else the problem.
   std::string Check() const;
 };

@@ -70,13 +70,14 @@ TEST(FitSequenceCommandLine, HelpListsEveryFlagWithItsDefaultAndDoesNoWork) {
                               "/examples/barrel.obj --out " + ShellQuote((dir / "out").string()) + " --help");
   EXPECT_EQ(help.exit_code, 0);
   EXPECT_FALSE(fs::exists(dir / "out"));
-  for (const char* flag : {"--input", "--out", "--init", "--work-budget", "--time-budget", "--max-ops", "--seed",
+  for (const char* flag : {"--input", "--out", "--init", "--work-budget", "--time-budget", "--max-ops", "--max-faces", "--seed",
                            "--threads", "--optimizer", "--loss", "--fit-gates", "--samples", "--freeform",
                            "--blender-axes", "--quiet"}) {
     EXPECT_NE(DefaultIn(help.out, flag), "(not listed)") << flag;
   }
   EXPECT_EQ(DefaultIn(help.out, "--work-budget"), std::to_string(ZeroShotOptions().work_budget));
   EXPECT_EQ(DefaultIn(help.out, "--max-ops"), std::to_string(ZeroShotOptions().max_ops));
+  EXPECT_EQ(DefaultIn(help.out, "--max-faces"), std::to_string(kDefaultMaxFaces));
   EXPECT_EQ(DefaultIn(help.out, "--seed"), std::to_string(FitterOptions().seed));
   EXPECT_EQ(DefaultIn(help.out, "--threads"), std::to_string(HardwareThreads()));
   EXPECT_EQ(DefaultIn(help.out, "--time-budget"), "0");
@@ -91,6 +92,7 @@ TEST(ApplySequenceCommandLine, HelpListsItsFlagsWithTheirDefaults) {
   const ToolOutput help = RunTool(std::string(OPGRAPH_APPLY_SEQUENCE) + " --help");
   EXPECT_EQ(help.exit_code, 0);
   EXPECT_EQ(DefaultIn(help.out, "--max-ops"), "1000");
+  EXPECT_EQ(DefaultIn(help.out, "--max-faces"), std::to_string(kDefaultMaxFaces));
   EXPECT_EQ(DefaultIn(help.out, "--out"), "\"\"");
 }
 

@@ -18,6 +18,7 @@
 #include "ops/sequence.h"
 #include "tests/blender_runner.h"
 #include "tests/gt_convert.h"
+#include "tests/run_command.h"
 
 namespace opgraph {
 namespace {
@@ -265,9 +266,9 @@ TEST_P(BadSequence, FailsWithOneLineAndWritesNothing) {
   const fs::path err = dir / "stderr.txt";
   const std::string command = std::string(OPGRAPH_APPLY_SEQUENCE) + " " + ShellQuote(seq.string()) + " --out " +
                               ShellQuote(out.string()) + " 2> " + ShellQuote(err.string());
-  const int status = std::system(command.c_str());
-  ASSERT_TRUE(WIFEXITED(status));
-  EXPECT_EQ(WEXITSTATUS(status), 2);
+  long peak_rss_kb = 0;
+  EXPECT_EQ(RunCommand(command, &peak_rss_kb), 2);
+  EXPECT_LT(peak_rss_kb, kMaxRefusalRssKb) << "refused only after taking " << peak_rss_kb << " kB";
   EXPECT_FALSE(fs::exists(out));
   std::ifstream in(err);
   std::string line, extra;
@@ -282,13 +283,13 @@ INSTANTIATE_TEST_SUITE_P(
     ::testing::Values(
         BadInput{"missing_file", "", "cannot open file"},
         BadInput{"twenty_subdivisions", R"({"operations": [{"op": "Subdivision", "params": {"levels": 1}}, {"op": "Subdivision", "params": {"levels": 1}}, {"op": "Subdivision", "params": {"levels": 1}}, {"op": "Subdivision", "params": {"levels": 1}}, {"op": "Subdivision", "params": {"levels": 1}}, {"op": "Subdivision", "params": {"levels": 1}}, {"op": "Subdivision", "params": {"levels": 1}}, {"op": "Subdivision", "params": {"levels": 1}}, {"op": "Subdivision", "params": {"levels": 1}}, {"op": "Subdivision", "params": {"levels": 1}}, {"op": "Subdivision", "params": {"levels": 1}}, {"op": "Subdivision", "params": {"levels": 1}}, {"op": "Subdivision", "params": {"levels": 1}}, {"op": "Subdivision", "params": {"levels": 1}}, {"op": "Subdivision", "params": {"levels": 1}}, {"op": "Subdivision", "params": {"levels": 1}}, {"op": "Subdivision", "params": {"levels": 1}}, {"op": "Subdivision", "params": {"levels": 1}}, {"op": "Subdivision", "params": {"levels": 1}}, {"op": "Subdivision", "params": {"levels": 1}}]})",
-                 "operation 9 (Subdivision): field 'levels': would make 6291456 faces, above the limit of 2000000"},
+                 "operation 9 (Subdivision): output too large: would make 6291456 faces, above --max-faces 2000000"},
         BadInput{"cuts_then_subdivision_6",
                  R"({"operations": [{"op": "LoopCut", "params": {"axis": "X", "cuts": 64, "near": [0, 0, 0]}},
                                     {"op": "LoopCut", "params": {"axis": "Y", "cuts": 64, "near": [0, 0, 0]}},
                                     {"op": "LoopCut", "params": {"axis": "Z", "cuts": 64, "near": [0, 0, 0]}},
                                     {"op": "Subdivision", "params": {"levels": 6}}]})",
-                 "operation 3 (Subdivision): field 'levels': would make"},
+                 "operation 3 (Subdivision): output too large: would make"},
         BadInput{"unknown_top_level", R"({"operations": [], "operatoins": []})", "sequence: field 'operatoins': unknown field"},
         BadInput{"huge_version", R"({"version": 4294967297, "operations": []})", "sequence: field 'version': unsupported"},
         BadInput{"other_format", R"({"format": "obj", "operations": []})", "sequence: field 'format'"},

@@ -1,6 +1,7 @@
 #include "tests/run_command.h"
 
 #include <gtest/gtest.h>
+#include <sys/resource.h>
 #include <sys/wait.h>
 #include <unistd.h>
 
@@ -13,8 +14,21 @@ namespace opgraph {
 
 namespace fs = std::filesystem;
 
-int RunCommand(const std::string& command) {
-  const int status = std::system(command.c_str());
+int RunCommand(const std::string& command, long* peak_rss_kb) {
+  if (peak_rss_kb == nullptr) {
+    const int status = std::system(command.c_str());
+    return WIFEXITED(status) ? WEXITSTATUS(status) : -1;
+  }
+  const pid_t child = fork();
+  if (child < 0) return -1;
+  if (child == 0) {
+    execl("/bin/sh", "sh", "-c", command.c_str(), static_cast<char*>(nullptr));
+    _exit(127);
+  }
+  int status = 0;
+  rusage usage{};
+  if (wait4(child, &status, 0, &usage) != child) return -1;
+  *peak_rss_kb = usage.ru_maxrss;  // Linux: the child's and its waited-for descendants' peak
   return WIFEXITED(status) ? WEXITSTATUS(status) : -1;
 }
 
@@ -33,7 +47,9 @@ int QuickFit(const fs::path& input, const fs::path& out, int work_budget) {
 void ExpectRefused(const std::string& command, const fs::path& out, const std::string& expected) {
   // Per process: the suite runs tests of one binary side by side.
   const fs::path err = fs::temp_directory_path() / ("opgraph_refused_" + std::to_string(getpid()) + ".txt");
-  EXPECT_EQ(RunCommand(command + " > /dev/null 2> " + ShellQuote(err.string())), 2) << command;
+  long peak_rss_kb = 0;
+  EXPECT_EQ(RunCommand(command + " > /dev/null 2> " + ShellQuote(err.string()), &peak_rss_kb), 2) << command;
+  EXPECT_LT(peak_rss_kb, kMaxRefusalRssKb) << command;
   EXPECT_FALSE(fs::exists(out)) << command;
   std::ifstream in(err);
   std::string line, extra;

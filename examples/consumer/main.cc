@@ -1,4 +1,4 @@
-// opgraph as a library, through its entry header api/opgraph.h: reads a shape, builds a small
+// opgraph as a library, through its entry header <opgraph/opgraph.h>: reads a shape, builds a small
 // design sequence with the typed builders (ops/builders.h), replays it and writes the run's
 // outputs, then recovers a sequence for the shape with a short search.
 //
@@ -7,7 +7,8 @@
 #include <exception>
 #include <iostream>
 
-#include "api/opgraph.h"
+#include <opgraph/opgraph.h>
+
 #include "ops/builders.h"
 
 int main(int argc, char** argv) {
