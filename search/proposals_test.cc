@@ -193,7 +193,7 @@ TEST(Proposals, FacetRidgeOnTheFaceBelowIt) {
 TEST(Proposals, EveryStructuredFamilyEvaluates) {
   const Layout pose = PoseLayoutOnBox(Eigen::Matrix3d::Identity(), Vec3d(-1, -0.5, -2), Vec3d(1, 0.5, 2));
   EXPECT_EQ(ExpectAllEvaluate(pose, ProposeSmoothing(pose)), 1);
-  EXPECT_EQ(ExpectAllEvaluate(pose, ProposeProfiles(pose)), 12);  // 6 profiles, each also subdivided
+  EXPECT_EQ(ExpectAllEvaluate(pose, ProposeProfiles(pose)), 14);  // 7 profiles, each also subdivided
   EXPECT_EQ(ExpectAllEvaluate(pose, ProposeDeforms(pose)), 12);   // along the long axis Z
   EXPECT_EQ(ExpectAllEvaluate(pose, ProposeRidges(pose)), 12);    // axis pairs and sides
   EXPECT_EQ(ExpectAllEvaluate(pose, ProposeHoles(pose)), 9);
@@ -203,6 +203,15 @@ TEST(Proposals, EveryStructuredFamilyEvaluates) {
     EXPECT_NO_THROW(EvaluateSequence(&sequence));
   }
   EXPECT_EQ(ProposeGrids(pose).size(), 3u);
+  // Without the Rotate, the Translate, or both: one op fewer each, and the documents say so.
+  EXPECT_EQ(ExpectAllEvaluate(pose, ProposePoseDrops(pose)), 3);
+  const Round drops = ProposePoseDrops(pose).at(0);
+  Layout both = pose;
+  ASSERT_FALSE(drops.alternatives.at(2)(&both).empty());
+  EXPECT_EQ(both.NumOps(), pose.NumOps() - 2);
+  for (const Json& op : both.Document()["operations"]) EXPECT_EQ(op["op"], "GlobalAffineScale");
+  EXPECT_TRUE(drops.finishing);
+  EXPECT_TRUE(ProposePoseDrops(both).empty());
   // The profile follows the long axis.
   Layout profiled = pose;
   ProposeProfiles(pose)[0].alternatives[0](&profiled);
