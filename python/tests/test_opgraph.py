@@ -140,11 +140,11 @@ class WriteOutputsTest(unittest.TestCase):
     def test_writes_the_files(self):
         sequence = json.loads(TWISTED_VASE.read_text())
         with tempfile.TemporaryDirectory() as out:
-            opgraph.write_outputs(sequence, pathlib.Path(out) / "vase", name="vase")
+            opgraph.write_outputs(sequence, pathlib.Path(out) / "written", name="written")
             for name in ["result.obj", "result.glb", "rebuild_blender.py", "sequence.json", "steps/06_SimpleDeformBend.obj"]:
-                self.assertGreater(os.path.getsize(os.path.join(out, "vase", name)), 0, name)
-            written = json.loads((pathlib.Path(out) / "vase" / "sequence.json").read_text())
-            self.assertEqual(written["name"], "vase")
+                self.assertGreater(os.path.getsize(os.path.join(out, "written", name)), 0, name)
+            written = json.loads((pathlib.Path(out) / "written" / "sequence.json").read_text())
+            self.assertEqual(written["name"], "written")
             self.assertEqual([operation["op"] for operation in written["operations"]],
                              [operation["op"] for operation in sequence["operations"]])
             opgraph.write_outputs(json.dumps(sequence), os.path.join(out, "flat"), write_steps=False)
