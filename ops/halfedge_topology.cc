@@ -197,7 +197,8 @@ HalfedgeTopology::Corners HalfedgeTopology::EdgeCorners(int e) const {
   auto add = [&](HalfedgeHandle h) {
     if (halfedge_corner_[h.idx()].face >= 0) corners.push_back(halfedge_corner_[h.idx()]);
   };
-  const auto [a, b] = edge_vertices_[e];
+  // Named copies, not a structured binding: the lambda below captures them (C++17).
+  const int a = edge_vertices_[e].first, b = edge_vertices_[e].second;
   // Each OpenMesh edge joining (copies of) a and b is met once as a halfedge a -> b.
   ForEachOutgoing(a, [&](HalfedgeHandle h) {
     if (Original(mesh_.to_vertex_handle(h)) != b) return;

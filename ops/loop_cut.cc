@@ -102,6 +102,8 @@ void LoopCutOp::Prepare(const Mesh& input) {
   if (seed < 0) throw FieldError("near", "no edge parallel to the axis " + kAxes[axis_]);
   std::vector<int> ring_of_edge;
   ring_ = GrowRing(input, *topology, parallel, seed, &ring_of_edge);
+  // A face the ring crosses has two of its edges, so it splits into at most cuts + 1 faces.
+  CheckOutputFaces("cuts", static_cast<int64_t>(input.faces.size()) + static_cast<int64_t>(ring_.size()) * cuts_);
 
   // Cut vertex k (1..cuts) along corner i of face f.
   auto cut = [&](int f, int i, int k) {

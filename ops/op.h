@@ -58,6 +58,11 @@ class Op {
   // false otherwise. EvaluateSequence refuses a step above its limit before the step, and before
   // the steps ahead of it in a run of such ops, allocate anything.
   virtual bool PredictOutputFaces(int64_t* /*faces*/, int64_t* /*corners*/) const { return false; }
+  // The most faces Prepare may output (EvaluateSequence passes Sequence::max_faces). An op whose
+  // output size depends on its input's topology (LoopCut: the ring it finds) checks it before it
+  // builds that output.
+  void set_max_output_faces(int64_t faces) { max_output_faces_ = faces; }
+  int64_t max_output_faces() const { return max_output_faces_; }
   // Output topology at `gate`: output_faces(), except for an op whose gate is a hard switch
   // (Boolean: the identity below 0.5), where Evaluate writes this topology's positions.
   virtual const std::vector<Polygon>& OutputFaces(double /*gate*/) const { return output_faces_; }
@@ -89,6 +94,13 @@ class Op {
     specs_.push_back({name, lower, upper, identity});
     params_.push_back(value);
   }
+  // Throws a FieldError on `field` when `faces` is above max_output_faces().
+  void CheckOutputFaces(const std::string& field, int64_t faces) const {
+    if (faces > max_output_faces_) {
+      throw FieldError(field, "would make " + std::to_string(faces) + " faces, above the limit of " +
+                                  std::to_string(max_output_faces_));
+    }
+  }
   // For ops whose topology is the input's.
   void KeepTopology(const Mesh& input) {
     output_faces_ = input.faces;
@@ -99,6 +111,7 @@ class Op {
   std::vector<double> params_;
   std::vector<Polygon> output_faces_;
   int num_output_vertices_ = 0;
+  int64_t max_output_faces_ = kMaxFacesCeiling;
 };
 
 // Forwards both Evaluate overloads to Derived::Apply<T>.

@@ -140,6 +140,7 @@ std::vector<Mesh> EvaluateSequence(Sequence* sequence) {
       }
     }
     try {
+      op.set_max_output_faces(max_faces);
       current = ApplyOp(&op, sequence->gates[i], current);
     } catch (const FieldError& e) {
       throw SequenceError(OpLabel(i, op.Name()) + ": field '" + e.field() + "': " + e.what());

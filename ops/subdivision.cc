@@ -89,10 +89,8 @@ void SubdivisionOp::Prepare(const Mesh& input) {
   // (the search's layouts).
   int64_t faces = static_cast<int64_t>(input.faces.size()), corners = 0;
   for (const Polygon& face : input.faces) corners += static_cast<int64_t>(face.size());
-  if (PredictOutputFaces(&faces, &corners) && faces > kMaxFacesCeiling) {
-    throw FieldError("levels", "would make " + std::to_string(faces) + " faces, above the limit of " +
-                                   std::to_string(kMaxFacesCeiling));
-  }
+  PredictOutputFaces(&faces, &corners);
+  CheckOutputFaces("levels", faces);
   num_input_vertices_ = input.NumVertices();
   const std::unique_ptr<TopologyRefiner> catmark = RefineUniformly(input, Sdc::SCHEME_CATMARK, levels_);
   const std::unique_ptr<TopologyRefiner> bilinear = RefineUniformly(input, Sdc::SCHEME_BILINEAR, levels_);

@@ -72,6 +72,7 @@ std::unique_ptr<Op> MakeVariant(const Op& op, int index, const std::string& fiel
   std::unique_ptr<Op> variant;
   try {
     variant = CreateOp(op.Name(), params);
+    variant->set_max_output_faces(op.max_output_faces());
     variant->Prepare(input);
   } catch (const std::exception& e) {
     throw std::invalid_argument(label + ": option " + option.dump() + ": " + e.what());

@@ -12,6 +12,7 @@ $SUDO apt-get install -y -qq \
   nlohmann-json3-dev libnanoflann-dev \
   libgtest-dev libgmock-dev libbenchmark-dev \
   blender python3 python3-numpy chromium \
-  pybind11-dev python3-pybind11 python3-dev >/dev/null
+  pybind11-dev python3-pybind11 python3-dev \
+  clang libclang-rt-14-dev >/dev/null  # clang and libFuzzer: the fuzz harnesses (scripts/fuzz.sh)
 # Input formats: Assimp for meshes, PCL for point clouds (their recommends pull VTK and Qt, unused).
 $SUDO apt-get install -y -qq --no-install-recommends libassimp-dev libpcl-dev >/dev/null

@@ -54,6 +54,12 @@ FitterOptions Evaluator::FitOptions(FitPrecision precision, const Json& document
   return options;
 }
 
+Sequence Evaluator::Parse(const Json& document) const {
+  Sequence sequence = ParseSequence(document);
+  sequence.max_faces = options_.max_faces;
+  return sequence;
+}
+
 // Runs on a worker thread: touches no member that changes during a batch.
 Evaluator::Outcome Evaluator::FitUncached(const Layout& layout, FitPrecision precision) const {
   Outcome outcome;
@@ -61,15 +67,14 @@ Evaluator::Outcome Evaluator::FitUncached(const Layout& layout, FitPrecision pre
   if (layout.NumOps() > options_.max_ops) return outcome;
   const Json document = layout.Document();
   try {
-    Sequence sequence = ParseSequence(document);
-    sequence.max_faces = options_.max_faces;
+    Sequence sequence = Parse(document);
     outcome.fitted = true;
     const FitSummary summary =
         FitSequence(target_, &sequence, FitOptions(precision, document, layout.half_extent));
     outcome.work = Work(summary);
     outcome.seconds = summary.seconds;
     outcome.trial.layout = layout.WithParameters(SequenceToJson(sequence));
-    Sequence replay = ParseSequence(outcome.trial.layout.Document());
+    Sequence replay = Parse(outcome.trial.layout.Document());
     outcome.trial.loss = summary.final_loss;
     const std::vector<Mesh> steps = EvaluateSequence(&replay);
     outcome.trial.ok = std::isfinite(outcome.trial.loss) && !BreaksReplay(document, steps);

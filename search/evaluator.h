@@ -41,6 +41,9 @@ class Evaluator {
   // The finishing gate fit of `sequence` (parsed from `document`): op gates fitted with the
   // sparsity stage, ops below the threshold pruned. Throws the fitter's errors.
   FitSummary FitGates(Sequence* sequence, const Json& document, const Vec3d& half_extent);
+  // `document` parsed with the search's size limit (ZeroShotOptions::max_faces): evaluating it
+  // refuses a step above --max-faces, so no sequence the search writes is larger than that.
+  Sequence Parse(const Json& document) const;
   // The fitter options of `precision`, with the domain rules of `document`.
   FitterOptions FitOptions(FitPrecision precision, const Json& document, const Vec3d& half_extent) const;
 

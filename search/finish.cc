@@ -21,7 +21,7 @@ Json Simplify(Evaluator* evaluator, Json document) {
   metrics_options.seed = evaluator->options().seed;
   auto chamfer = [&](const Json& candidate) {
     try {
-      Sequence sequence = ParseSequence(candidate);
+      Sequence sequence = evaluator->Parse(candidate);
       const Mesh result = EvaluateSequence(&sequence).back();
       return ComputeShapeMetrics(result, evaluator->target().shape(), metrics_options).chamfer.Sum();
     } catch (const std::runtime_error&) {
@@ -93,11 +93,11 @@ Json PruneOrPolish(Evaluator* evaluator, const Trial& best, double* loss) {
   }
   Json document = searched;
   try {
-    Sequence sequence = ParseSequence(searched);
+    Sequence sequence = evaluator->Parse(searched);
     const FitSummary summary = evaluator->FitGates(&sequence, searched, best.layout.half_extent);
     if (summary.cut_by_time) evaluator->NoteCutByTime("gate fit", "prune: the gate fit was cut by the time budget");
     Json fitted = SequenceToJson(sequence);
-    Sequence replay = ParseSequence(fitted);
+    Sequence replay = evaluator->Parse(fitted);
     const bool breaks_replay = BreaksReplay(fitted, EvaluateSequence(&replay));
     // Pruning must not undo what the search paid for.
     if (!breaks_replay && summary.final_loss <= best.loss * (1 + evaluator->options().min_relative_gain)) {

@@ -61,7 +61,7 @@ double Chamfer(const Evaluator& evaluator, const Json& document) {
   MetricsOptions options;
   options.num_samples = 3000;
   options.seed = evaluator.options().seed;
-  Sequence sequence = ParseSequence(document);
+  Sequence sequence = evaluator.Parse(document);
   return ComputeShapeMetrics(EvaluateSequence(&sequence).back(), evaluator.target().shape(), options).chamfer.Sum();
 }
 
@@ -75,7 +75,7 @@ struct Candidate {
 // The displacements fitted on the cage of `document` (its ops before `first_op`), written as a
 // VertexDisplace at `first_op`: one group per moved vertex, a box around it, expecting one vertex.
 std::optional<Candidate> FitCandidate(const Evaluator& evaluator, const Json& document, int first_op) {
-  Sequence sequence = ParseSequence(document);
+  Sequence sequence = evaluator.Parse(document);
   const std::vector<Mesh> steps = EvaluateSequence(&sequence);
   const Mesh cage = first_op == 0 ? sequence.StartMesh() : steps[first_op - 1];
   if (cage.NumVertices() > kMaxCageVertices) return std::nullopt;
@@ -111,7 +111,7 @@ std::optional<Candidate> FitCandidate(const Evaluator& evaluator, const Json& do
   candidate.document = document;
   Json& operations = candidate.document["operations"];
   operations.insert(operations.begin() + first_op, build::VertexDisplace(groups));
-  Sequence replay = ParseSequence(candidate.document);
+  Sequence replay = evaluator.Parse(candidate.document);
   if (BreaksReplay(candidate.document, EvaluateSequence(&replay))) return std::nullopt;
   candidate.chamfer = Chamfer(evaluator, candidate.document);
   candidate.loss = fit.final_loss;

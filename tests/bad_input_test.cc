@@ -59,6 +59,42 @@ TEST(MaxFaces, AStepAboveTheLimitIsRefusedNamingTheOp) {
   fs::remove_all(dir);
 }
 
+// LoopCut's size depends on the ring it finds: it is checked once the ring is known, before the
+// cut faces are built. A cube cut 64 times around X has 6 + 4 * 64 = 262 faces; the ring around
+// Y then crosses the 65 strips of the top and of the bottom and the two side faces: 132 faces,
+// each split into 65, so 262 + 132 * 64 = 8710.
+TEST(MaxFaces, ALoopCutAboveTheLimitIsRefusedBeforeItBuildsItsFaces) {
+  const fs::path dir = FreshDir("opgraph_max_faces_loop_cut");
+  WriteText(dir / "seq.json", R"({"operations": [
+      {"op": "LoopCut", "params": {"axis": "X", "cuts": 64}},
+      {"op": "LoopCut", "params": {"axis": "Y", "cuts": 64}}]})");
+  const std::string apply = Apply(dir / "seq.json", dir / "out");
+  ExpectRefused(apply + " --max-faces 300", dir / "out",
+                "seq.json: operation 1 (LoopCut): field 'cuts': would make 8710 faces, above the limit of 300");
+  EXPECT_EQ(RunCommand(apply + " --max-faces 8710 > /dev/null"), 0);
+  EXPECT_TRUE(fs::exists(dir / "out" / "result.obj"));
+  fs::remove_all(dir);
+}
+
+// The search keeps to --max-faces too: a layout or free-form refinement above it is not fitted
+// (the bundled example needs a few hundred faces; with 200 its free-form Subdivision would pass
+// the limit, and with 6 only the posed cube fits).
+TEST(MaxFaces, TheSearchKeepsItsResultWithinTheLimit) {
+  const fs::path dir = FreshDir("opgraph_max_faces_search");
+  const std::string input = std::string(OPGRAPH_SOURCE_DIR) + "/examples/barrel.obj";
+  for (const int max_faces : {6, 200}) {
+    const fs::path out = dir / ("out" + std::to_string(max_faces));
+    ASSERT_EQ(RunCommand(std::string(OPGRAPH_FIT_SEQUENCE) + " --input " + ShellQuote(input) + " --out " +
+                         ShellQuote(out.string()) + " --time-budget 8 --max-faces " + std::to_string(max_faces) +
+                         " > /dev/null 2>&1"),
+              0);
+    const Mesh result = ReadObj((out / "result.obj").string());
+    EXPECT_GE(result.NumFaces(), 6);
+    EXPECT_LE(result.NumFaces(), max_faces);
+  }
+  fs::remove_all(dir);
+}
+
 // 20 Subdivision(1) ops, each in range, grow 4x a step: the default limit stops them at the
 // step that would pass 2,000,000 faces, at once and in little memory.
 TEST(MaxFaces, AnUnboundedSequenceFailsFast) {
