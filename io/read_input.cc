@@ -2,6 +2,7 @@
 
 #include "core/obj_io.h"
 #include "io/pcd_header.h"
+#include "io/read_in_child_process.h"
 #include "io/ply_header.h"
 
 #include <assimp/DefaultLogger.hpp>
@@ -120,40 +121,44 @@ InputGeometry ReadWithAssimp(const std::string& path) {
       if (own) Assimp::DefaultLogger::kill();
     }
   } restore_logger{errors.get(), own_logger};
-  Assimp::Importer importer;
-  // Points and lines are kept (a PLY without faces is a point cloud, which Assimp's own
-  // validation step would reject; CheckGeometry validates instead); node transforms are baked so
-  // parts land where the file places them.
-  const aiScene* scene =
-      importer.ReadFile(path, aiProcess_JoinIdenticalVertices | aiProcess_PreTransformVertices);
-  if (scene == nullptr) Fail(path, std::string("cannot read mesh: ") + importer.GetErrorString());
-  if (!errors->first_error().empty()) Fail(path, "corrupt mesh: " + errors->first_error());
-  // Parts are concatenated; only vertices used by a face are kept (stray points and line ends
-  // carry no surface).
-  Mesh mesh;
-  for (unsigned m = 0; m < scene->mNumMeshes; ++m) {
-    const aiMesh* part = scene->mMeshes[m];
-    std::vector<int> index_in_mesh(part->mNumVertices, -1);
-    for (unsigned f = 0; f < part->mNumFaces; ++f) {
-      const aiFace& face = part->mFaces[f];
-      if (face.mNumIndices < 3) continue;
-      Polygon loop;
-      for (unsigned k = 0; k < face.mNumIndices; ++k) {
-        const unsigned v = face.mIndices[k];
-        if (v >= part->mNumVertices) Fail(path, "face refers to a missing vertex");
-        if (index_in_mesh[v] < 0) {
-          index_in_mesh[v] = mesh.NumVertices();
-          mesh.vertices.emplace_back(part->mVertices[v].x, part->mVertices[v].y, part->mVertices[v].z);
+  // Assimp crashes on some malformed files: it reads in a child process (the logger above, set
+  // up here, is the child's copy there).
+  return ReadInChildProcess(path, [&path, &errors] {
+    Assimp::Importer importer;
+    // Points and lines are kept (a PLY without faces is a point cloud, which Assimp's own
+    // validation step would reject; CheckGeometry validates instead); node transforms are baked so
+    // parts land where the file places them.
+    const aiScene* scene =
+        importer.ReadFile(path, aiProcess_JoinIdenticalVertices | aiProcess_PreTransformVertices);
+    if (scene == nullptr) Fail(path, std::string("cannot read mesh: ") + importer.GetErrorString());
+    if (!errors->first_error().empty()) Fail(path, "corrupt mesh: " + errors->first_error());
+    // Parts are concatenated; only vertices used by a face are kept (stray points and line ends
+    // carry no surface).
+    Mesh mesh;
+    for (unsigned m = 0; m < scene->mNumMeshes; ++m) {
+      const aiMesh* part = scene->mMeshes[m];
+      std::vector<int> index_in_mesh(part->mNumVertices, -1);
+      for (unsigned f = 0; f < part->mNumFaces; ++f) {
+        const aiFace& face = part->mFaces[f];
+        if (face.mNumIndices < 3) continue;
+        Polygon loop;
+        for (unsigned k = 0; k < face.mNumIndices; ++k) {
+          const unsigned v = face.mIndices[k];
+          if (v >= part->mNumVertices) Fail(path, "face refers to a missing vertex");
+          if (index_in_mesh[v] < 0) {
+            index_in_mesh[v] = mesh.NumVertices();
+            mesh.vertices.emplace_back(part->mVertices[v].x, part->mVertices[v].y, part->mVertices[v].z);
+          }
+          loop.push_back(index_in_mesh[v]);
         }
-        loop.push_back(index_in_mesh[v]);
+        mesh.faces.push_back(std::move(loop));
       }
-      mesh.faces.push_back(std::move(loop));
     }
-  }
-  if (mesh.faces.empty()) Fail(path, "no faces (for a point cloud use PLY, PCD or XYZ)");
-  InputGeometry input;
-  input.mesh = WeldExactDuplicates(mesh);
-  return input;
+    if (mesh.faces.empty()) Fail(path, "no faces (for a point cloud use PLY, PCD or XYZ)");
+    InputGeometry input;
+    input.mesh = WeldExactDuplicates(mesh);
+    return input;
+  });
 }
 
 InputGeometry FromPclBlob(const pcl::PCLPointCloud2& blob) {
@@ -171,17 +176,21 @@ InputGeometry FromPclBlob(const pcl::PCLPointCloud2& blob) {
 
 InputGeometry ReadPcd(const std::string& path) {
   CheckPcdFile(path);  // PCL crashes on some malformed headers and trusts declared counts
-  pcl::PCLPointCloud2 blob;
-  pcl::PCDReader reader;
-  if (reader.read(path, blob) < 0) Fail(path, "cannot read PCD point cloud");
-  return FromPclBlob(blob);
+  return ReadInChildProcess(path, [&path] {
+    pcl::PCLPointCloud2 blob;
+    pcl::PCDReader reader;
+    if (reader.read(path, blob) < 0) Fail(path, "cannot read PCD point cloud");
+    return FromPclBlob(blob);
+  });
 }
 
 InputGeometry ReadPlyPoints(const std::string& path) {
-  pcl::PCLPointCloud2 blob;
-  pcl::PLYReader reader;
-  if (reader.read(path, blob) < 0) Fail(path, "cannot read PLY");
-  return FromPclBlob(blob);
+  return ReadInChildProcess(path, [&path] {  // as Assimp, PCL trusts what a file says
+    pcl::PCLPointCloud2 blob;
+    pcl::PLYReader reader;
+    if (reader.read(path, blob) < 0) Fail(path, "cannot read PLY");
+    return FromPclBlob(blob);
+  });
 }
 
 InputGeometry ReadXyz(const std::string& path) {

@@ -24,9 +24,14 @@ if [ ${#harnesses[@]} -eq 0 ]; then
     fuzz_sequence)
 fi
 
-cmake -S . -B build-fuzz -G Ninja -DCMAKE_BUILD_TYPE=RelWithDebInfo -DCMAKE_CXX_COMPILER=clang++ \
-  -DOPGRAPH_BUILD_FUZZERS=ON -DOPGRAPH_BUILD_APPS=OFF -DOPGRAPH_BUILD_TESTS=OFF -DOPGRAPH_BUILD_PYTHON=OFF >/dev/null
-cmake --build build-fuzz -j 2 --target "${harnesses[@]}"
+mkdir -p build-fuzz
+if ! cmake -S . -B build-fuzz -G Ninja -DCMAKE_BUILD_TYPE=RelWithDebInfo -DCMAKE_CXX_COMPILER=clang++ \
+  -DOPGRAPH_BUILD_FUZZERS=ON -DOPGRAPH_BUILD_APPS=OFF -DOPGRAPH_BUILD_TESTS=OFF -DOPGRAPH_BUILD_PYTHON=OFF \
+  >build-fuzz/configure.log 2>&1; then
+  cat build-fuzz/configure.log
+  exit 1
+fi
+cmake --build build-fuzz -j 2 --target "${harnesses[@]}" | grep -v '^\[' || true
 
 out=out/fuzz
 mkdir -p "$out/crashes" "$out/logs"
