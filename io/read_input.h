@@ -23,7 +23,9 @@ struct InputGeometry {
 // polygons and applying the scene's node transforms, and point clouds: PCD (PCL), XYZ text
 // (`x y z [nx ny nz]` per line; also .pts/.txt), and PLY files without faces.
 // Throws std::runtime_error with a one-line message naming the problem (missing, empty or
-// corrupt file, unsupported format, non-finite coordinates, zero extent).
+// corrupt file, unsupported format, non-finite coordinates, zero extent). Assimp and PCL read in
+// a forked child process (io/read_in_child_process.h), so a file that crashes them is an error
+// here too.
 // Global state: a host program's PCL verbosity and Assimp DefaultLogger are as they were after
 // the call (test: ReadInput.LeavesTheHostsLoggingAsItWas). Calls on several threads are safe
 // (Assimp reads are serialised on its global logger); while one runs, PCL's process-wide

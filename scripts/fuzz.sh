@@ -31,7 +31,10 @@ if ! cmake -S . -B build-fuzz -G Ninja -DCMAKE_BUILD_TYPE=RelWithDebInfo -DCMAKE
   cat build-fuzz/configure.log
   exit 1
 fi
-cmake --build build-fuzz -j 2 --target "${harnesses[@]}" | grep -v '^\[' || true
+if ! cmake --build build-fuzz -j 2 --target "${harnesses[@]}" >build-fuzz/build.log 2>&1; then
+  tail -50 build-fuzz/build.log
+  exit 1
+fi
 
 out=out/fuzz
 mkdir -p "$out/crashes" "$out/logs"
