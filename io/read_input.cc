@@ -1,8 +1,8 @@
 #include "io/read_input.h"
 
 #include "core/obj_io.h"
-#include "io/pcd_header.h"
 #include "io/read_in_child_process.h"
+#include "io/read_point_cloud.h"
 #include "io/ply_header.h"
 
 #include <assimp/DefaultLogger.hpp>
@@ -11,11 +11,6 @@
 #include <assimp/LogStream.hpp>
 #include <assimp/postprocess.h>
 #include <assimp/scene.h>
-#include <pcl/console/print.h>
-#include <pcl/features/normal_3d.h>
-#include <pcl/io/pcd_io.h>
-#include <pcl/io/ply_io.h>
-#include <pcl/point_types.h>
 
 #include <algorithm>
 #include <cmath>
@@ -82,28 +77,6 @@ class AssimpErrorCollector : public Assimp::LogStream {
   std::string first_error_;
 };
 
-// Lowers PCL's process-wide verbosity while any read runs; the first read in saves the host's
-// level and the last one out restores it (so overlapping reads on two threads restore it too).
-class QuietPcl {
- public:
-  QuietPcl() {
-    const std::lock_guard<std::mutex> lock(mutex_);
-    if (readers_++ == 0) {
-      saved_ = pcl::console::getVerbosityLevel();
-      pcl::console::setVerbosityLevel(pcl::console::L_ALWAYS);
-    }
-  }
-  ~QuietPcl() {
-    const std::lock_guard<std::mutex> lock(mutex_);
-    if (--readers_ == 0) pcl::console::setVerbosityLevel(saved_);
-  }
-
- private:
-  static inline std::mutex mutex_;
-  static inline int readers_ = 0;
-  static inline pcl::console::VERBOSITY_LEVEL saved_ = pcl::console::L_INFO;
-};
-
 InputGeometry ReadWithAssimp(const std::string& path) {
   // Assimp's logger is global: a host program's own logger is borrowed (our stream attached, then
   // detached), else one is made for the call and removed after it.
@@ -161,69 +134,6 @@ InputGeometry ReadWithAssimp(const std::string& path) {
   });
 }
 
-InputGeometry FromPclBlob(const pcl::PCLPointCloud2& blob) {
-  pcl::PointCloud<pcl::PointNormal> cloud;
-  pcl::fromPCLPointCloud2(blob, cloud);
-  bool has_normals = false;
-  for (const auto& field : blob.fields) has_normals = has_normals || field.name == "normal_x";
-  InputGeometry input;
-  for (const auto& p : cloud.points) {
-    input.mesh.vertices.emplace_back(p.x, p.y, p.z);
-    if (has_normals) input.normals.emplace_back(p.normal_x, p.normal_y, p.normal_z);
-  }
-  return input;
-}
-
-InputGeometry ReadPcd(const std::string& path) {
-  CheckPcdFile(path);  // PCL crashes on some malformed headers and trusts declared counts
-  return ReadInChildProcess(path, [&path] {
-    pcl::PCLPointCloud2 blob;
-    pcl::PCDReader reader;
-    if (reader.read(path, blob) < 0) Fail(path, "cannot read PCD point cloud");
-    return FromPclBlob(blob);
-  });
-}
-
-InputGeometry ReadPlyPoints(const std::string& path) {
-  return ReadInChildProcess(path, [&path] {  // as Assimp, PCL trusts what a file says
-    pcl::PCLPointCloud2 blob;
-    pcl::PLYReader reader;
-    if (reader.read(path, blob) < 0) Fail(path, "cannot read PLY");
-    return FromPclBlob(blob);
-  });
-}
-
-InputGeometry ReadXyz(const std::string& path) {
-  std::ifstream in(path);
-  InputGeometry input;
-  std::string line;
-  int line_number = 0;
-  int columns = -1;
-  while (std::getline(in, line)) {
-    ++line_number;
-    const size_t start = line.find_first_not_of(" \t\r");
-    if (start == std::string::npos || line[start] == '#') continue;
-    std::replace(line.begin(), line.end(), ',', ' ');
-    std::istringstream fields(line);
-    std::vector<double> values;
-    std::string token;
-    while (fields >> token) {
-      char* end = nullptr;
-      const double value = std::strtod(token.c_str(), &end);
-      if (end == token.c_str() || *end != '\0') Fail(path, "line " + std::to_string(line_number) + ": '" + token.substr(0, 20) + "' is not a number");
-      values.push_back(value);
-    }
-    if (values.size() < 3) Fail(path, "line " + std::to_string(line_number) + ": expected x y z [nx ny nz]");
-    const int row_columns = values.size() >= 6 ? 6 : 3;
-    if (columns < 0) columns = row_columns;
-    if (row_columns != columns) Fail(path, "line " + std::to_string(line_number) + ": column count changes");
-    input.mesh.vertices.emplace_back(values[0], values[1], values[2]);
-    if (columns == 6) input.normals.emplace_back(values[3], values[4], values[5]);
-  }
-  return input;
-}
-
-// True when the PLY header declares no faces (a point cloud, which Assimp cannot load).
 constexpr double kMaxCoordinate = 1e12;
 
 void CheckGeometry(const std::string& path, InputGeometry* input) {
@@ -264,9 +174,9 @@ InputGeometry ReadInput(const std::string& path) {
   const std::string extension = Lowercase(fs::path(path).extension().string());
   InputGeometry input;
   if (extension == ".pcd") {
-    input = ReadPcd(path);
+    input = ReadPcdPoints(path);
   } else if (extension == ".xyz" || extension == ".pts" || extension == ".txt") {
-    input = ReadXyz(path);
+    input = ReadXyzPoints(path);
   } else if (extension == ".obj") {
     // Our own reader: it keeps one vertex list across groups and rejects non-finite numbers,
     // which Assimp's OBJ loader silently drops.
@@ -280,31 +190,6 @@ InputGeometry ReadInput(const std::string& path) {
   }
   CheckGeometry(path, &input);
   return input;
-}
-
-Positions<double> EstimatePointNormals(const Positions<double>& points, int k) {
-  auto cloud = std::make_shared<pcl::PointCloud<pcl::PointXYZ>>();
-  cloud->reserve(points.size());
-  Vec3d centroid = Vec3d::Zero();
-  for (const Vec3d& p : points) {
-    cloud->push_back(pcl::PointXYZ(static_cast<float>(p.x()), static_cast<float>(p.y()), static_cast<float>(p.z())));
-    centroid += p;
-  }
-  centroid /= std::max<size_t>(points.size(), 1);
-  pcl::NormalEstimation<pcl::PointXYZ, pcl::Normal> estimation;
-  estimation.setInputCloud(cloud);
-  estimation.setSearchMethod(std::make_shared<pcl::search::KdTree<pcl::PointXYZ>>());
-  estimation.setKSearch(std::min<int>(k, static_cast<int>(points.size())));
-  pcl::PointCloud<pcl::Normal> normals;
-  estimation.compute(normals);
-  Positions<double> result(points.size());
-  for (size_t i = 0; i < points.size(); ++i) {
-    Vec3d n(normals[i].normal_x, normals[i].normal_y, normals[i].normal_z);
-    if (!n.allFinite() || n.norm() < 1e-12) n = (points[i] - centroid).normalized();
-    if (n.dot(points[i] - centroid) < 0) n = -n;
-    result[i] = n.normalized();
-  }
-  return result;
 }
 
 }  // namespace opgraph
