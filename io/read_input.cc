@@ -15,10 +15,8 @@
 #include <algorithm>
 #include <cmath>
 #include <filesystem>
-#include <fstream>
 #include <map>
 #include <mutex>
-#include <sstream>
 #include <stdexcept>
 
 namespace opgraph {
@@ -77,6 +75,45 @@ class AssimpErrorCollector : public Assimp::LogStream {
   std::string first_error_;
 };
 
+// The file's meshes through Assimp (run in the child process of ReadWithAssimp); `errors`
+// holds what Assimp logged.
+InputGeometry ImportWithAssimp(const std::string& path, const AssimpErrorCollector& errors) {
+  Assimp::Importer importer;
+  // Points and lines are kept (a PLY without faces is a point cloud, which Assimp's own
+  // validation step would reject; CheckGeometry validates instead); node transforms are baked so
+  // parts land where the file places them.
+  const aiScene* scene =
+      importer.ReadFile(path, aiProcess_JoinIdenticalVertices | aiProcess_PreTransformVertices);
+  if (scene == nullptr) Fail(path, std::string("cannot read mesh: ") + importer.GetErrorString());
+  if (!errors.first_error().empty()) Fail(path, "corrupt mesh: " + errors.first_error());
+  // Parts are concatenated; only vertices used by a face are kept (stray points and line ends
+  // carry no surface).
+  Mesh mesh;
+  for (unsigned m = 0; m < scene->mNumMeshes; ++m) {
+    const aiMesh* part = scene->mMeshes[m];
+    std::vector<int> index_in_mesh(part->mNumVertices, -1);
+    for (unsigned f = 0; f < part->mNumFaces; ++f) {
+      const aiFace& face = part->mFaces[f];
+      if (face.mNumIndices < 3) continue;
+      Polygon loop;
+      for (unsigned k = 0; k < face.mNumIndices; ++k) {
+        const unsigned v = face.mIndices[k];
+        if (v >= part->mNumVertices) Fail(path, "face refers to a missing vertex");
+        if (index_in_mesh[v] < 0) {
+          index_in_mesh[v] = mesh.NumVertices();
+          mesh.vertices.emplace_back(part->mVertices[v].x, part->mVertices[v].y, part->mVertices[v].z);
+        }
+        loop.push_back(index_in_mesh[v]);
+      }
+      mesh.faces.push_back(std::move(loop));
+    }
+  }
+  if (mesh.faces.empty()) Fail(path, "no faces (for a point cloud use PLY, PCD or XYZ)");
+  InputGeometry input;
+  input.mesh = WeldExactDuplicates(mesh);
+  return input;
+}
+
 InputGeometry ReadWithAssimp(const std::string& path) {
   // Assimp's logger is global: a host program's own logger is borrowed (our stream attached, then
   // detached), else one is made for the call and removed after it.
@@ -96,42 +133,7 @@ InputGeometry ReadWithAssimp(const std::string& path) {
   } restore_logger{errors.get(), own_logger};
   // Assimp crashes on some malformed files: it reads in a child process (the logger above, set
   // up here, is the child's copy there).
-  return ReadInChildProcess(path, [&path, &errors] {
-    Assimp::Importer importer;
-    // Points and lines are kept (a PLY without faces is a point cloud, which Assimp's own
-    // validation step would reject; CheckGeometry validates instead); node transforms are baked so
-    // parts land where the file places them.
-    const aiScene* scene =
-        importer.ReadFile(path, aiProcess_JoinIdenticalVertices | aiProcess_PreTransformVertices);
-    if (scene == nullptr) Fail(path, std::string("cannot read mesh: ") + importer.GetErrorString());
-    if (!errors->first_error().empty()) Fail(path, "corrupt mesh: " + errors->first_error());
-    // Parts are concatenated; only vertices used by a face are kept (stray points and line ends
-    // carry no surface).
-    Mesh mesh;
-    for (unsigned m = 0; m < scene->mNumMeshes; ++m) {
-      const aiMesh* part = scene->mMeshes[m];
-      std::vector<int> index_in_mesh(part->mNumVertices, -1);
-      for (unsigned f = 0; f < part->mNumFaces; ++f) {
-        const aiFace& face = part->mFaces[f];
-        if (face.mNumIndices < 3) continue;
-        Polygon loop;
-        for (unsigned k = 0; k < face.mNumIndices; ++k) {
-          const unsigned v = face.mIndices[k];
-          if (v >= part->mNumVertices) Fail(path, "face refers to a missing vertex");
-          if (index_in_mesh[v] < 0) {
-            index_in_mesh[v] = mesh.NumVertices();
-            mesh.vertices.emplace_back(part->mVertices[v].x, part->mVertices[v].y, part->mVertices[v].z);
-          }
-          loop.push_back(index_in_mesh[v]);
-        }
-        mesh.faces.push_back(std::move(loop));
-      }
-    }
-    if (mesh.faces.empty()) Fail(path, "no faces (for a point cloud use PLY, PCD or XYZ)");
-    InputGeometry input;
-    input.mesh = WeldExactDuplicates(mesh);
-    return input;
-  });
+  return ReadInChildProcess(path, [&path, &errors] { return ImportWithAssimp(path, *errors); });
 }
 
 constexpr double kMaxCoordinate = 1e12;
