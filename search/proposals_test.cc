@@ -209,7 +209,8 @@ TEST(Proposals, EveryStructuredFamilyEvaluates) {
   Layout both = pose;
   ASSERT_FALSE(drops.alternatives.at(2)(&both).empty());
   EXPECT_EQ(both.NumOps(), pose.NumOps() - 2);
-  for (const Json& op : both.Document()["operations"]) EXPECT_EQ(op["op"], "GlobalAffineScale");
+  const Json document = both.Document();  // held: a range-for over a member of a temporary reads freed memory
+  for (const Json& op : document["operations"]) EXPECT_EQ(op["op"], "GlobalAffineScale");
   EXPECT_TRUE(drops.finishing);
   EXPECT_TRUE(ProposePoseDrops(both).empty());
   // The profile follows the long axis.
