@@ -13,7 +13,8 @@ namespace opgraph {
 namespace {
 
 // The names the flags take, each beside its value.
-constexpr std::pair<const char*, Optimizer> kOptimizers[] = {{"ceres", Optimizer::kCeres}, {"adam", Optimizer::kAdam}};
+constexpr std::pair<const char*, Optimizer> kOptimizers[] = {
+    {"lm", Optimizer::kLm}, {"ceres", Optimizer::kCeres}, {"adam", Optimizer::kAdam}};
 constexpr std::pair<const char*, RobustLoss> kLosses[] = {
     {"none", RobustLoss::kNone}, {"huber", RobustLoss::kHuber}, {"cauchy", RobustLoss::kCauchy}};
 
@@ -71,7 +72,7 @@ DEFINE_int32(threads, opgraph::HardwareThreads(),
              "candidate fits run in parallel, in [1, 256] (default: every hardware thread); the result does not "
              "depend on it");
 DEFINE_string(optimizer, opgraph::OptimizerName(opgraph::FitterOptions().optimizer),
-              "the fits' optimizer: ceres (Levenberg-Marquardt) or adam");
+              "the fits' optimizer: lm (Levenberg-Marquardt on dense normal equations), ceres (Ceres' Levenberg-Marquardt, dense QR) or adam");
 DEFINE_string(loss, opgraph::NameOf(opgraph::kLosses, opgraph::FitterOptions().loss),
               "with --init: a robust loss against outliers in the target, none, huber or cauchy (scale 0.02 of the "
               "target's unit box)");
@@ -114,7 +115,7 @@ FitSequenceOptions FitSequenceOptionsFromCommandLine(int argc, char** argv) {
   options.out_dir = FLAGS_out;
   options.fitter.seed = options.target.seed = options.zero_shot.seed = FLAGS_seed;
   if (!ValueOf(kOptimizers, FLAGS_optimizer, &options.fitter.optimizer)) {
-    std::exit(BadInput("fit_sequence", "--optimizer: expected 'ceres' or 'adam'"));
+    std::exit(BadInput("fit_sequence", "--optimizer: expected 'lm', 'ceres' or 'adam'"));
   }
   options.zero_shot.optimizer = options.fitter.optimizer;
   if (!ValueOf(kLosses, FLAGS_loss, &options.fitter.loss)) {

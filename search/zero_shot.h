@@ -71,7 +71,7 @@ struct ZeroShotOptions {
   // Independent candidate fits run on this many threads; each fit runs on one (so the result
   // is the same for every thread count).
   int num_threads = 1;
-  Optimizer optimizer = Optimizer::kCeres;
+  Optimizer optimizer = Optimizer::kLm;
   // The fits' residuals. Point-to-plane alone lets a cage leave parts of the target uncovered
   // (house: Chamfer 0.039 vs 0.014 with both; docs/zero-shot.md).
   ChamferMetric metric = ChamferMetric::kPlaneAndPoint;

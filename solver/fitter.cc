@@ -16,6 +16,7 @@
 #include "core/nearest.h"
 #include "ops/extrude.h"
 #include "solver/boolean_weight.h"
+#include "solver/fitter_solvers.h"
 
 namespace opgraph {
 
@@ -137,19 +138,6 @@ struct Fitter::Correspondences {
   MixedBranchTerms mixed;
 };
 
-// The objective at fixed correspondences: residual blocks that both optimizers and the loss
-// reports evaluate identically (sum over blocks of rho(|r|^2); Ceres' cost is half of it).
-struct Objective {
-  struct Term {
-    std::unique_ptr<ceres::CostFunction> cost;
-    const ceres::LossFunction* loss;
-    std::vector<double*> blocks;
-    std::vector<int> columns;  // first Program Jacobian column of each block
-  };
-  std::vector<Term> terms;
-  std::vector<std::unique_ptr<ceres::LossFunction>> losses;
-};
-
 Fitter::Fitter(const Target& target, Sequence* sequence, const FitterOptions& options)
     : target_(target), sequence_(sequence), options_(options) {
   const std::string problem = options.Check();
@@ -157,6 +145,7 @@ Fitter::Fitter(const Target& target, Sequence* sequence, const FitterOptions& op
   free_gates_ = options.fit_gates;
   boolean_weight_ops_ = options.boolean_weight_ops;
   program_ = std::make_unique<Program>(sequence, free_gates_, options.branches, boolean_weight_ops_);
+  scratch_ = std::make_unique<ObjectiveScratch>();
   trust_region_radius_ = options.initial_trust_region_radius;
 }
 
@@ -322,48 +311,6 @@ void BuildObjective(const Program& program, const FitterOptions& options, double
   }
 }
 
-// Sum over terms of rho(|r|^2) at the program's current evaluation; with `gradient` (one entry
-// per Jacobian column of the program) also its gradient. Returns +inf when invalid.
-double EvaluateObjective(const Program& program, const Objective& objective, std::vector<double>* gradient,
-                         std::vector<double>* residuals, std::vector<double>* jacobian) {
-  if (!program.valid()) return std::numeric_limits<double>::infinity();
-  if (gradient) gradient->assign(program.num_columns(), 0.0);
-  double total = 0;
-  std::vector<double*> jacobian_pointers;
-  for (const Objective::Term& term : objective.terms) {
-    const ceres::CostFunction& cost = *term.cost;
-    const int m = cost.num_residuals();
-    residuals->resize(m);
-    const std::vector<int32_t>& sizes = cost.parameter_block_sizes();
-    int width = 0;
-    for (int s : sizes) width += s;
-    jacobian->resize(static_cast<size_t>(m) * width);
-    jacobian_pointers.resize(sizes.size());
-    for (size_t b = 0, offset = 0; b < sizes.size(); offset += static_cast<size_t>(m) * sizes[b], ++b) {
-      jacobian_pointers[b] = jacobian->data() + offset;
-    }
-    if (!cost.Evaluate(term.blocks.data(), residuals->data(), gradient ? jacobian_pointers.data() : nullptr)) {
-      return std::numeric_limits<double>::infinity();
-    }
-    double s = 0;
-    for (double r : *residuals) s += r * r;
-    double rho[3] = {s, 1.0, 0.0};
-    if (term.loss) term.loss->Evaluate(s, rho);
-    total += rho[0];
-    if (!gradient) continue;
-    // d rho / d params = 2 rho'(s) J^T r; map each block to its Program columns.
-    for (size_t b = 0; b < sizes.size(); ++b) {
-      const int column = term.columns[b];
-      for (int j = 0; j < sizes[b]; ++j) {
-        double g = 0;
-        for (int i = 0; i < m; ++i) g += jacobian_pointers[b][i * sizes[b] + j] * (*residuals)[i];
-        (*gradient)[column + j] += 2 * rho[1] * g;
-      }
-    }
-  }
-  return total;
-}
-
 }  // namespace
 
 void Fitter::MakeObjective(const Correspondences& correspondences, Objective* objective) const {
@@ -379,8 +326,7 @@ double Fitter::CurrentLoss() {
   Objective objective;
   MakeObjective(correspondences, &objective);
   program_->PrepareForEvaluation(false, true);
-  std::vector<double> r, j;
-  return EvaluateObjective(*program_, objective, nullptr, &r, &j);
+  return EvaluateObjective(*program_, objective, nullptr, scratch_.get());
 }
 
 bool Fitter::Held(const ProgramBlock& block) const {
@@ -388,7 +334,12 @@ bool Fitter::Held(const ProgramBlock& block) const {
          sequence_->IsPinned(static_cast<size_t>(block.op));
 }
 
-void Fitter::AddToProblem(const Objective& objective, ceres::Problem* problem) const {
+std::unique_ptr<ceres::Problem> Fitter::MakeCeresProblem(const Objective& objective) const {
+  ceres::Problem::Options problem_options;
+  problem_options.evaluation_callback = program_.get();
+  problem_options.cost_function_ownership = ceres::DO_NOT_TAKE_OWNERSHIP;
+  problem_options.loss_function_ownership = ceres::DO_NOT_TAKE_OWNERSHIP;
+  auto problem = std::make_unique<ceres::Problem>(problem_options);
   for (const ProgramBlock& block : program_->blocks()) {
     problem->AddParameterBlock(block.data, block.size);
     if (Held(block)) {
@@ -407,101 +358,102 @@ void Fitter::AddToProblem(const Objective& objective, ceres::Problem* problem) c
   for (const Objective::Term& term : objective.terms) {
     problem->AddResidualBlock(term.cost.get(), const_cast<ceres::LossFunction*>(term.loss), term.blocks);
   }
+  return problem;
 }
 
-void Fitter::EvaluateBothWays(double* own_loss, std::vector<double>* own_gradient, double* ceres_loss,
-                              std::vector<double>* ceres_gradient) {
+void Fitter::EvaluateBothWays(ObjectiveEvaluation* own, ObjectiveEvaluation* ceres) {
   Correspondences correspondences;
   BuildCorrespondences(options_.seed, &correspondences);
   Objective objective;
   MakeObjective(correspondences, &objective);
   program_->PrepareForEvaluation(true, true);
-  std::vector<double> r, j;
-  *own_loss = EvaluateObjective(*program_, objective, own_gradient, &r, &j);
-  ceres::Problem::Options problem_options;
-  problem_options.evaluation_callback = program_.get();
-  problem_options.cost_function_ownership = ceres::DO_NOT_TAKE_OWNERSHIP;
-  problem_options.loss_function_ownership = ceres::DO_NOT_TAKE_OWNERSHIP;
-  ceres::Problem problem(problem_options);
-  AddToProblem(objective, &problem);
+  own->loss = EvaluateObjective(*program_, objective, &own->gradient, scratch_.get());
+  EvaluateNormalEquations(*program_, objective, FindFreeColumns().index, &own->jtj, &own->jtr, scratch_.get());
+  const std::unique_ptr<ceres::Problem> problem = MakeCeresProblem(objective);
   double cost = 0;
-  problem.Evaluate(ceres::Problem::EvaluateOptions(), &cost, nullptr, ceres_gradient, nullptr);
-  *ceres_loss = 2 * cost;
-  for (double& g : *ceres_gradient) g *= 2;
+  ceres::CRSMatrix jacobian;
+  problem->Evaluate(ceres::Problem::EvaluateOptions(), &cost, nullptr, &ceres->gradient, &jacobian);
+  ceres->loss = 2 * cost;
+  for (double& g : ceres->gradient) g *= 2;
+  Eigen::MatrixXd dense = Eigen::MatrixXd::Zero(jacobian.num_rows, jacobian.num_cols);
+  for (int row = 0; row < jacobian.num_rows; ++row) {
+    for (int k = jacobian.rows[row]; k < jacobian.rows[row + 1]; ++k) dense(row, jacobian.cols[k]) = jacobian.values[k];
+  }
+  ceres->jtj = dense.transpose() * dense;
+}
+
+FreeColumns Fitter::FindFreeColumns() const {
+  FreeColumns columns;
+  columns.index.assign(program_->num_columns(), -1);
+  std::vector<double> lower, upper;
+  for (const ProgramBlock& block : program_->blocks()) {
+    for (int i = 0; i < block.size; ++i) {
+      if (Held(block) || std::count(block.constant.begin(), block.constant.end(), i) > 0) continue;
+      columns.index[block.column + i] = columns.size();
+      columns.address.push_back(block.data + i);
+      const bool bounded = block.holds_op_params();
+      lower.push_back(bounded ? sequence_->ops[block.op]->specs()[i].lower : -std::numeric_limits<double>::infinity());
+      upper.push_back(bounded ? sequence_->ops[block.op]->specs()[i].upper : std::numeric_limits<double>::infinity());
+    }
+  }
+  columns.lower = Eigen::Map<const Eigen::VectorXd>(lower.data(), lower.size());
+  columns.upper = Eigen::Map<const Eigen::VectorXd>(upper.data(), upper.size());
+  return columns;
 }
 
 double Fitter::Solve(const Correspondences& correspondences, double sparsity_weight, FitSummary* summary) {
   sparsity_weight_ = sparsity_weight;
   Objective objective;
   MakeObjective(correspondences, &objective);
-  const std::vector<ProgramBlock>& blocks = program_->blocks();
+  // The trust region carries over between correspondence updates: the first solve starts
+  // cautious (large early steps tend to jump between near-equivalent configurations, such as
+  // an inset's depth traded for an extrusion's height), later ones where the last ended.
+  auto carry_over = [&](double radius) {
+    trust_region_radius_ = std::max(options_.initial_trust_region_radius, std::min(1e16, radius));
+  };
+  switch (options_.optimizer) {
+    case Optimizer::kLm: {
+      DenseLmOptions lm;
+      lm.max_iterations = options_.max_inner_iterations;
+      lm.initial_radius = trust_region_radius_;
+      lm.deadline = &deadline_;
+      DenseLmSummary lm_summary;
+      const double loss = SolveWithDenseLm(program_.get(), objective, FindFreeColumns(), lm, &lm_summary, scratch_.get());
+      summary->inner_iterations += lm_summary.iterations;
+      carry_over(lm_summary.radius);
+      return loss;
+    }
+    case Optimizer::kCeres:
+      return SolveWithCeres(objective, summary);
+    case Optimizer::kAdam:
+      break;
+  }
+  return SolveWithAdam(program_.get(), objective, FindFreeColumns(), options_.adam_iterations,
+                       options_.adam_learning_rate, deadline_, &summary->inner_iterations, scratch_.get());
+}
 
-  if (options_.optimizer == Optimizer::kCeres) {
-    ceres::Problem::Options problem_options;
-    problem_options.evaluation_callback = program_.get();
-    problem_options.cost_function_ownership = ceres::DO_NOT_TAKE_OWNERSHIP;
-    problem_options.loss_function_ownership = ceres::DO_NOT_TAKE_OWNERSHIP;
-    ceres::Problem problem(problem_options);
-    AddToProblem(objective, &problem);
-    ceres::Solver::Options solver_options;
-    solver_options.minimizer_type = ceres::TRUST_REGION;
-    solver_options.trust_region_strategy_type = ceres::LEVENBERG_MARQUARDT;
-    solver_options.linear_solver_type = ceres::DENSE_QR;
-    solver_options.max_num_iterations = options_.max_inner_iterations;
-    solver_options.num_threads = options_.num_threads;
-    solver_options.logging_type = ceres::SILENT;
-    solver_options.function_tolerance = 1e-8;
-    solver_options.parameter_tolerance = 1e-10;
-    // The trust region carries over between correspondence updates: the first solve starts
-    // cautious (large early steps tend to jump between near-equivalent configurations, such as
-    // an inset's depth traded for an extrusion's height), later ones where the last ended.
-    solver_options.initial_trust_region_radius = trust_region_radius_;
-    if (deadline_.limited()) solver_options.max_solver_time_in_seconds = deadline_.SecondsLeft();
-    ceres::Solver::Summary solver_summary;
-    ceres::Solve(solver_options, &problem, &solver_summary);
-    summary->inner_iterations += static_cast<int>(solver_summary.iterations.size()) - 1;
-    if (!solver_summary.iterations.empty()) {
-      trust_region_radius_ = std::max(options_.initial_trust_region_radius,
-                                      std::min(1e16, solver_summary.iterations.back().trust_region_radius));
-    }
-    program_->PrepareForEvaluation(false, true);  // leave the cache at the solution
-    return 2 * solver_summary.final_cost;
+double Fitter::SolveWithCeres(const Objective& objective, FitSummary* summary) {
+  const std::unique_ptr<ceres::Problem> problem = MakeCeresProblem(objective);
+  ceres::Solver::Options solver_options;
+  solver_options.minimizer_type = ceres::TRUST_REGION;
+  solver_options.trust_region_strategy_type = ceres::LEVENBERG_MARQUARDT;
+  solver_options.linear_solver_type = ceres::DENSE_QR;
+  solver_options.max_num_iterations = options_.max_inner_iterations;
+  solver_options.num_threads = options_.num_threads;
+  solver_options.logging_type = ceres::SILENT;
+  solver_options.function_tolerance = 1e-8;
+  solver_options.parameter_tolerance = 1e-10;
+  solver_options.initial_trust_region_radius = trust_region_radius_;
+  if (deadline_.limited()) solver_options.max_solver_time_in_seconds = deadline_.SecondsLeft();
+  ceres::Solver::Summary solver_summary;
+  ceres::Solve(solver_options, problem.get(), &solver_summary);
+  summary->inner_iterations += static_cast<int>(solver_summary.iterations.size()) - 1;
+  if (!solver_summary.iterations.empty()) {
+    trust_region_radius_ = std::max(options_.initial_trust_region_radius,
+                                    std::min(1e16, solver_summary.iterations.back().trust_region_radius));
   }
-
-  // Adam over the same objective: gradient from the same residual blocks and Jacobians.
-  const int n = program_->num_columns();
-  std::vector<double> m(n, 0.0), v(n, 0.0), gradient, r, jac;
-  std::vector<bool> free(n, false);
-  std::vector<double*> address(n);
-  std::vector<double> lower(n, -std::numeric_limits<double>::infinity()), upper(n, std::numeric_limits<double>::infinity());
-  for (const ProgramBlock& block : blocks) {
-    for (int i = 0; i < block.size; ++i) {
-      free[block.column + i] = std::count(block.constant.begin(), block.constant.end(), i) == 0 && !Held(block);
-      address[block.column + i] = block.data + i;
-      if (block.holds_op_params()) {
-        lower[block.column + i] = sequence_->ops[block.op]->specs()[i].lower;
-        upper[block.column + i] = sequence_->ops[block.op]->specs()[i].upper;
-      }
-    }
-  }
-  constexpr double kBeta1 = 0.9, kBeta2 = 0.999, kEpsilon = 1e-8;
-  double loss = 0;
-  for (int step = 1; step <= options_.adam_iterations && !deadline_.Passed(); ++step) {
-    program_->PrepareForEvaluation(true, true);
-    loss = EvaluateObjective(*program_, objective, &gradient, &r, &jac);
-    if (!std::isfinite(loss)) break;
-    for (int c = 0; c < n; ++c) {
-      if (!free[c]) continue;
-      m[c] = kBeta1 * m[c] + (1 - kBeta1) * gradient[c];
-      v[c] = kBeta2 * v[c] + (1 - kBeta2) * gradient[c] * gradient[c];
-      const double m_hat = m[c] / (1 - std::pow(kBeta1, step)), v_hat = v[c] / (1 - std::pow(kBeta2, step));
-      double& x = *address[c];
-      x = std::min(upper[c], std::max(lower[c], x - options_.adam_learning_rate * m_hat / (std::sqrt(v_hat) + kEpsilon)));
-    }
-    ++summary->inner_iterations;
-  }
-  program_->PrepareForEvaluation(false, true);
-  return EvaluateObjective(*program_, objective, nullptr, &r, &jac);
+  program_->PrepareForEvaluation(false, true);  // leave the cache at the solution
+  return 2 * solver_summary.final_cost;
 }
 
 Fitter::Reproduction Fitter::CheckReproduction() const {
@@ -575,8 +527,7 @@ double Fitter::RunStage(double sparsity_weight, FitSummary* summary) {
     Objective objective;
     MakeObjective(correspondences, &objective);
     program_->PrepareForEvaluation(false, true);
-    std::vector<double> r, j;
-    const double fresh = EvaluateObjective(*program_, objective, nullptr, &r, &j);
+    const double fresh = EvaluateObjective(*program_, objective, nullptr, scratch_.get());
     summary->history.push_back({Now() - start_time_, summary->inner_iterations, fresh});
     const bool improving = fresh < best * (1 - options_.min_relative_improvement);
     if (fresh < best) {
@@ -598,7 +549,7 @@ double Fitter::RunStage(double sparsity_weight, FitSummary* summary) {
       char line[200];
       std::snprintf(line, sizeof(line), "fit: update %d: loss %.4e -> %.4e (%d %s, %.2f s)%s\n", update, fresh, solved,
                     summary->inner_iterations - iterations_before,
-                    options_.optimizer == Optimizer::kCeres ? "LM iterations" : "Adam steps", Now() - started,
+                    options_.optimizer != Optimizer::kAdam ? "LM iterations" : "Adam steps", Now() - started,
                     sparsity_weight > 0 ? " [gate sparsity]" : "");
       *options_.progress << line << std::flush;
     }

@@ -38,6 +38,7 @@
 #include <string>
 #include <vector>
 
+#include <Eigen/Core>
 #include <ceres/problem.h>
 
 #include "core/deadline.h"
@@ -48,10 +49,12 @@
 namespace opgraph {
 
 enum class RobustLoss { kNone, kHuber, kCauchy };
-enum class Optimizer { kCeres, kAdam };
+// kLm: Levenberg-Marquardt on dense normal equations (solver/dense_lm.h); kCeres: Ceres'
+// Levenberg-Marquardt (dense QR) on the same residual blocks; kAdam: Adam on their gradient.
+enum class Optimizer { kLm, kCeres, kAdam };
 
 struct FitterOptions {
-  Optimizer optimizer = Optimizer::kCeres;
+  Optimizer optimizer = Optimizer::kLm;
   int num_output_samples = 3000;  // output-to-target samples per correspondence update
   int num_target_samples = 3000;  // target-to-output samples (the first of the target's samples)
   double output_to_target_weight = 1.0;
@@ -114,7 +117,9 @@ struct FitSummary {
   std::vector<Point> history;
 };
 
-struct Objective;  // residual blocks at fixed correspondences (fitter.cc)
+struct Objective;         // residual blocks at fixed correspondences (solver/objective.h)
+struct ObjectiveScratch;  // its evaluation buffers
+struct FreeColumns;       // the columns a solve moves (solver/fitter_solvers.h)
 
 class Fitter {
  public:
@@ -134,16 +139,23 @@ class Fitter {
   // Data loss at the current parameters with fresh correspondences.
   double CurrentLoss();
 
-  // Checks that both optimizers see one objective: at the current parameters and fresh
-  // correspondences, the loss and gradient (per Program column) as Adam evaluates them, and
-  // as Ceres does (Problem::Evaluate over the same residual blocks; 2 x its cost and gradient,
-  // one entry per parameter of the blocks it varies).
-  void EvaluateBothWays(double* own_loss, std::vector<double>* own_gradient, double* ceres_loss,
-                        std::vector<double>* ceres_gradient);
+  // The objective at one point, for checking that every optimizer sees the same one.
+  struct ObjectiveEvaluation {
+    double loss = 0;
+    std::vector<double> gradient;  // per Program column (Ceres: per parameter of the blocks it varies)
+    Eigen::MatrixXd jtj;           // Gauss-Newton J^T J of the (robust-corrected) residuals
+    Eigen::VectorXd jtr;           // J^T r (own evaluation only; the gradient is 2 J^T r)
+  };
+  // At the current parameters and fresh correspondences: the objective as the fitter's own
+  // optimizers evaluate it (EvaluateObjective, EvaluateNormalEquations over the free columns),
+  // and as Ceres does (Problem::Evaluate over the same residual blocks: 2 x its cost and
+  // gradient, and J^T J of its Jacobian).
+  void EvaluateBothWays(ObjectiveEvaluation* own, ObjectiveEvaluation* ceres);
 
  private:
   struct Correspondences;
-  void AddToProblem(const Objective& objective, ceres::Problem* problem) const;
+  // The objective's residual blocks over the program's parameter blocks (held ones constant).
+  std::unique_ptr<ceres::Problem> MakeCeresProblem(const Objective& objective) const;
   // Whether the solver holds `block` constant: fixed by the program, held in this stage, or
   // belonging to a pinned op.
   bool Held(const ProgramBlock& block) const;
@@ -152,6 +164,9 @@ class Fitter {
   void MakeObjective(const Correspondences& correspondences, Objective* objective) const;
   double RunStage(double sparsity_weight, FitSummary* summary);
   double Solve(const Correspondences& correspondences, double sparsity_weight, FitSummary* summary);
+  double SolveWithCeres(const Objective& objective, FitSummary* summary);
+  // The Program columns the current stage moves (not held, not constant within a block).
+  FreeColumns FindFreeColumns() const;
   void Finalise(FitSummary* summary);
   // Writes the branch choices' argmax into the sequence and rebuilds the program without them.
   // Returns whether there were any.
@@ -168,6 +183,7 @@ class Fitter {
   Sequence* sequence_;
   FitterOptions options_;
   std::unique_ptr<Program> program_;
+  std::unique_ptr<ObjectiveScratch> scratch_;
   double sparsity_weight_ = 0;
   double trust_region_radius_ = 0;
   bool hold_params_ = false, hold_gates_ = false;

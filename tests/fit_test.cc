@@ -322,9 +322,9 @@ TEST(Fit, DomainRuleBoundsAParameter) {
 namespace opgraph {
 namespace {
 
-// Adam and Ceres minimise one objective: the same loss and gradient at a point (free gates,
+// Dense LM, Ceres and Adam minimise one objective: the same loss, gradient and J^T J at a point (free gates,
 // a robust loss and a domain rule included), and Adam also recovers a perturbed shape.
-TEST(Fit, AdamAndCeresSeeOneObjective) {
+TEST(Fit, EveryOptimizerSeesOneObjective) {
   const Target target(TwistedBox(), {}, TargetOptions());
   Sequence sequence = ParseSequence(Json::parse(kTwistedBox));
   FitterOptions options = TestOptions();
@@ -334,17 +334,24 @@ TEST(Fit, AdamAndCeresSeeOneObjective) {
   options.domain_rules.push_back({2, 0, -0.5, 0.5, 3.0});
   Fitter fitter(target, &sequence, options);
   PerturbParameters(fitter.program(), sequence, 8);
-  double own_loss, ceres_loss;
-  std::vector<double> own_gradient, ceres_gradient;
-  fitter.EvaluateBothWays(&own_loss, &own_gradient, &ceres_loss, &ceres_gradient);
-  EXPECT_GT(own_loss, 0);
-  EXPECT_NEAR(own_loss, ceres_loss, 1e-12 * own_loss);
+  Fitter::ObjectiveEvaluation own, ceres;
+  fitter.EvaluateBothWays(&own, &ceres);
+  EXPECT_GT(own.loss, 0);
+  EXPECT_NEAR(own.loss, ceres.loss, 1e-12 * own.loss);
   // No held parameters here (no Subdivision), so Ceres' gradient has every Program column.
-  ASSERT_EQ(own_gradient.size(), ceres_gradient.size());
+  ASSERT_EQ(own.gradient.size(), ceres.gradient.size());
   double largest = 0;
-  for (double g : own_gradient) largest = std::max(largest, std::abs(g));
+  for (double g : own.gradient) largest = std::max(largest, std::abs(g));
   EXPECT_GT(largest, 0);
-  for (size_t c = 0; c < own_gradient.size(); ++c) EXPECT_NEAR(own_gradient[c], ceres_gradient[c], 1e-10 * largest) << c;
+  for (size_t c = 0; c < own.gradient.size(); ++c) {
+    EXPECT_NEAR(own.gradient[c], ceres.gradient[c], 1e-10 * largest) << c;
+    EXPECT_NEAR(2 * own.jtr[c], own.gradient[c], 1e-10 * largest) << c;  // dense LM's gradient
+  }
+  // Dense LM's normal equations are Ceres' J^T J, robust-loss correction included.
+  ASSERT_EQ(own.jtj.rows(), ceres.jtj.rows());
+  ASSERT_EQ(own.jtj.cols(), ceres.jtj.cols());
+  EXPECT_GT(ceres.jtj.norm(), 0);
+  EXPECT_LT((own.jtj - ceres.jtj).norm(), 1e-10 * ceres.jtj.norm());
 
   FitterOptions adam = TestOptions();
   adam.optimizer = Optimizer::kAdam;
