@@ -1,6 +1,5 @@
 #include "solver/fitter.h"
 
-#include <ceres/loss_function.h>
 #include <ceres/manifold.h>
 #include <ceres/problem.h>
 #include <ceres/solver.h>
@@ -13,9 +12,8 @@
 #include <ostream>
 #include <stdexcept>
 
-#include "core/nearest.h"
-#include "ops/extrude.h"
-#include "solver/boolean_weight.h"
+#include "solver/build_fit_objective.h"
+#include "solver/fit_correspondences.h"
 #include "solver/fitter_solvers.h"
 
 namespace opgraph {
@@ -56,87 +54,7 @@ double Now() {
   return std::chrono::duration<double>(std::chrono::steady_clock::now().time_since_epoch()).count();
 }
 
-std::unique_ptr<ceres::LossFunction> MakeLoss(RobustLoss kind, double scale) {
-  switch (kind) {
-    case RobustLoss::kHuber:
-      return std::make_unique<ceres::HuberLoss>(scale);
-    case RobustLoss::kCauchy:
-      return std::make_unique<ceres::CauchyLoss>(scale);
-    case RobustLoss::kNone:
-      break;
-  }
-  return nullptr;
-}
-
-// The Boolean weight's terms (solver/boolean_weight.h), when the last op has one: beta's
-// block, whether each output-to-target sample lies on the extrusion's faces, and each target
-// point's correspondence on the Boolean surface.
-struct BooleanWeightTerms {
-  int beta_block = -1;
-  std::vector<char> on_extrusion;
-  std::vector<SurfaceCorrespondence> boolean_to_target, target_to_boolean;
-};
-
-// A mixed branch's terms (program/program.h): per option, output-to-target samples of its own
-// surface and each target point's closest point on it, every residual scaled by
-// sqrt(w_option), so the loss mixes the options' Chamfer terms.
-struct MixedBranchTerms {
-  int block = -1;
-  std::vector<SurfaceCorrespondence> forward, backward;
-  std::vector<int> forward_option, backward_option;
-  double forward_weight = 0, backward_weight = 0;  // residual multipliers (each option's own count)
-};
-
-SurfaceCorrespondence CorrespondenceOnTriangle(const MeshTriangle& triangle, const Vec3d& barycentric,
-                                               const Vec3d& target_point, const Vec3d& target_normal) {
-  SurfaceCorrespondence c;
-  for (int k = 0; k < 3; ++k) c.vertices[k] = triangle.v[k], c.weights[k] = barycentric[k];
-  c.target_point = target_point;
-  c.target_normal = target_normal;
-  return c;
-}
-
-void BuildMixedCorrespondences(const Program& program, const Target& target, const FitterOptions& options,
-                               uint64_t seed, MixedBranchTerms* out) {
-  const Positions<double>& positions = program.positions();
-  const int num_options = program.blocks()[program.MixedBranchBlock()].size;
-  std::vector<std::vector<MeshTriangle>> triangles(num_options);
-  for (const MeshTriangle& t : FanTriangulate(program.faces())) triangles[program.face_options()[t.face]].push_back(t);
-  const int num_target = std::min<int>(options.num_target_samples, static_cast<int>(target.points().size()));
-  out->block = program.MixedBranchBlock();
-  for (int k = 0; k < num_options; ++k) {
-    if (options.output_to_target_weight > 0) {
-      const SurfaceSamples samples = SampleSurface(positions, triangles[k], options.num_output_samples, seed);
-      for (size_t i = 0; i < samples.points.size(); ++i) {
-        const int nearest = target.tree().Nearest(samples.points[i], nullptr);
-        out->forward.push_back(CorrespondenceOnTriangle(triangles[k][samples.triangles[i]], samples.barycentrics[i],
-                                                        target.points()[nearest], target.normals()[nearest]));
-        out->forward_option.push_back(k);
-      }
-    }
-    if (options.target_to_output_weight > 0 && num_target > 0) {
-      const TriangleTree tree(positions, triangles[k]);
-      for (int i = 0; i < num_target; ++i) {
-        const ClosestPoint closest = tree.Closest(target.points()[i]);
-        if (closest.triangle < 0) continue;
-        out->backward.push_back(CorrespondenceOnTriangle(triangles[k][closest.triangle], closest.barycentric,
-                                                         target.points()[i], target.normals()[i]));
-        out->backward_option.push_back(k);
-      }
-    }
-  }
-  out->forward_weight = target.scale() * std::sqrt(options.output_to_target_weight / std::max(1, options.num_output_samples));
-  out->backward_weight = target.scale() * std::sqrt(options.target_to_output_weight / std::max(1, num_target));
-}
-
 }  // namespace
-
-struct Fitter::Correspondences {
-  std::vector<SurfaceCorrespondence> output_to_target, target_to_output;
-  double output_to_target_weight = 0, target_to_output_weight = 0;  // residual multipliers
-  BooleanWeightTerms boolean;
-  MixedBranchTerms mixed;
-};
 
 Fitter::Fitter(const Target& target, Sequence* sequence, const FitterOptions& options)
     : target_(target), sequence_(sequence), options_(options) {
@@ -151,177 +69,16 @@ Fitter::Fitter(const Target& target, Sequence* sequence, const FitterOptions& op
 
 Fitter::~Fitter() = default;
 
-void Fitter::BuildCorrespondences(uint64_t seed, Correspondences* out) {
-  program_->EvaluateValues();
-  const Positions<double>& positions = program_->positions();
-  const std::vector<MeshTriangle> triangles = FanTriangulate(program_->faces());
-  out->output_to_target.clear();
-  out->target_to_output.clear();
-  out->boolean = BooleanWeightTerms();
-  out->mixed = MixedBranchTerms();
-  if (program_->MixedBranchBlock() >= 0) {
-    BuildMixedCorrespondences(*program_, target_, options_, seed, &out->mixed);
-    return;
-  }
-  const int last_op = static_cast<int>(sequence_->ops.size()) - 1;
-  out->boolean.beta_block = last_op >= 0 ? program_->BooleanWeightBlock(last_op) : -1;
-  const int first_extruded = out->boolean.beta_block >= 0
-                                 ? static_cast<const ExtrudeOp&>(*sequence_->ops[last_op]).first_created_face()
-                                 : std::numeric_limits<int>::max();
-  const double scale = target_.scale();
-  const VirtualSurface boolean_surface =
-      out->boolean.beta_block >= 0 ? BooleanSurface(*program_, last_op) : VirtualSurface();
-  if (options_.output_to_target_weight > 0 && out->boolean.beta_block >= 0) {
-    // B's own faces, sampled at the output's density (solver/boolean_weight.h).
-    std::vector<MeshTriangle> own;
-    for (const MeshTriangle& t : boolean_surface.triangles) {
-      if (t.face >= boolean_surface.first_own_face) own.push_back(t);
-    }
-    auto area = [](const Positions<double>& p, const std::vector<MeshTriangle>& list) {
-      double sum = 0;
-      for (const MeshTriangle& t : list) sum += 0.5 * (p[t.v[1]] - p[t.v[0]]).cross(p[t.v[2]] - p[t.v[0]]).norm();
-      return sum;
-    };
-    const double output_area = area(positions, triangles);
-    const int count = output_area > 0 ? static_cast<int>(std::lround(options_.num_output_samples *
-                                                                      area(boolean_surface.positions, own) / output_area))
-                                      : 0;
-    const SurfaceSamples samples = SampleSurface(boolean_surface.positions, own, count, seed + 1);
-    std::vector<int> own_index;  // own triangle -> index in boolean_surface.triangles
-    for (size_t t = 0; t < boolean_surface.triangles.size(); ++t) {
-      if (boolean_surface.triangles[t].face >= boolean_surface.first_own_face) own_index.push_back(static_cast<int>(t));
-    }
-    for (size_t i = 0; i < samples.points.size(); ++i) {
-      const int nearest = target_.tree().Nearest(samples.points[i], nullptr);
-      out->boolean.boolean_to_target.push_back(CorrespondenceOnSurface(boolean_surface, own_index[samples.triangles[i]],
-                                                                       samples.barycentrics[i], target_.points()[nearest],
-                                                                       target_.normals()[nearest]));
-    }
-  }
-  if (options_.output_to_target_weight > 0) {
-    const SurfaceSamples samples = SampleSurface(positions, triangles, options_.num_output_samples, seed);
-    for (size_t i = 0; i < samples.points.size(); ++i) {
-      SurfaceCorrespondence c;
-      const MeshTriangle& t = triangles[samples.triangles[i]];
-      for (int k = 0; k < 3; ++k) c.vertices[k] = t.v[k], c.weights[k] = samples.barycentrics[i][k];
-      const int nearest = target_.tree().Nearest(samples.points[i], nullptr);
-      c.target_point = target_.points()[nearest];
-      c.target_normal = target_.normals()[nearest];
-      out->output_to_target.push_back(c);
-      out->boolean.on_extrusion.push_back(t.face >= first_extruded);
-    }
-    out->output_to_target_weight =
-        scale * std::sqrt(options_.output_to_target_weight / std::max<size_t>(1, out->output_to_target.size()));
-  }
-  const int num_target = std::min<int>(options_.num_target_samples, static_cast<int>(target_.points().size()));
-  if (options_.target_to_output_weight > 0 && num_target > 0) {
-    const TriangleTree tree(positions, triangles);
-    std::unique_ptr<TriangleTree> boolean_tree;
-    if (out->boolean.beta_block >= 0) {
-      boolean_tree = std::make_unique<TriangleTree>(boolean_surface.positions, boolean_surface.triangles);
-    }
-    for (int i = 0; i < num_target; ++i) {
-      if (out->boolean.beta_block >= 0) {
-        const ClosestPoint on_boolean = boolean_tree->Closest(target_.points()[i]);
-        if (on_boolean.triangle >= 0) {
-          out->boolean.target_to_boolean.push_back(
-              CorrespondenceOnSurface(boolean_surface, on_boolean.triangle, on_boolean.barycentric, target_.points()[i],
-                                      target_.normals()[i]));
-        }
-      }
-      const ClosestPoint closest = tree.Closest(target_.points()[i]);
-      if (closest.triangle < 0) continue;
-      SurfaceCorrespondence c;
-      const MeshTriangle& t = triangles[closest.triangle];
-      for (int k = 0; k < 3; ++k) c.vertices[k] = t.v[k], c.weights[k] = closest.barycentric[k];
-      c.target_point = target_.points()[i];
-      c.target_normal = target_.normals()[i];
-      out->target_to_output.push_back(c);
-    }
-    out->target_to_output_weight =
-        scale * std::sqrt(options_.target_to_output_weight / std::max<size_t>(1, out->target_to_output.size()));
-  }
+void Fitter::BuildCorrespondences(uint64_t seed, FitCorrespondences* out) {
+  BuildFitCorrespondences(program_.get(), *sequence_, target_, options_, seed, out);
 }
 
-namespace {
-
-void BuildObjective(const Program& program, const FitterOptions& options, double unit_scale,
-                    const std::vector<SurfaceCorrespondence>& forward, double forward_weight,
-                    const std::vector<SurfaceCorrespondence>& backward, double backward_weight,
-                    const BooleanWeightTerms& boolean, const MixedBranchTerms& mixed, const double* sparsity_weight,
-                    Objective* objective) {
-  const std::vector<double*> all_blocks = program.BlockPointers();
-  // Which residuals the Boolean weight scales (solver/boolean_weight.h): `on_extrusion` selects
-  // (when given) the ones scaled by sqrt(1 - beta); the Boolean side's by sqrt(beta).
-  enum class Scale { kNone, kExtrusion, kBoolean };
-  auto add_terms = [&](const std::vector<SurfaceCorrespondence>& list, double weight, const std::vector<char>* on_extrusion,
-                       Scale scale) {
-    // The robust loss acts on the residual weight * (p - q) = sqrt(w / N) * (distance in the
-    // unit box), so its scale (unit-box units) is multiplied by sqrt(w / N) = weight / unit_scale.
-    objective->losses.push_back(MakeLoss(options.loss, options.loss_scale * weight / unit_scale));
-    const ceres::LossFunction* loss = objective->losses.back().get();
-    for (size_t i = 0; i < list.size(); ++i) {
-      const Scale s = on_extrusion && !(*on_extrusion)[i] ? Scale::kNone : scale;
-      std::unique_ptr<ceres::CostFunction> cost;
-      if (s == Scale::kNone) {
-        cost = std::make_unique<CorrespondenceCost>(&program, list[i], options.metric, weight);
-      } else {
-        cost = std::make_unique<BooleanWeightedCost>(&program, list[i], options.metric, weight, boolean.beta_block,
-                                                     s == Scale::kBoolean);
-      }
-      objective->terms.push_back({std::move(cost), loss, all_blocks, {}});
-    }
-  };
-  const bool weighted = boolean.beta_block >= 0;
-  add_terms(forward, forward_weight, weighted ? &boolean.on_extrusion : nullptr, weighted ? Scale::kExtrusion : Scale::kNone);
-  add_terms(backward, backward_weight, nullptr, weighted ? Scale::kExtrusion : Scale::kNone);
-  if (weighted) {
-    add_terms(boolean.boolean_to_target, forward_weight, nullptr, Scale::kBoolean);
-    add_terms(boolean.target_to_boolean, backward_weight, nullptr, Scale::kBoolean);
-  }
-  auto add_mixed_terms = [&](const std::vector<SurfaceCorrespondence>& list, const std::vector<int>& option,
-                             double weight) {
-    objective->losses.push_back(MakeLoss(options.loss, options.loss_scale * weight / unit_scale));
-    for (size_t i = 0; i < list.size(); ++i) {
-      objective->terms.push_back({std::make_unique<BranchWeightedCost>(&program, list[i], options.metric, weight,
-                                                                       mixed.block, option[i]),
-                                  objective->losses.back().get(), all_blocks, {}});
-    }
-  };
-  add_mixed_terms(mixed.forward, mixed.forward_option, mixed.forward_weight);
-  add_mixed_terms(mixed.backward, mixed.backward_option, mixed.backward_weight);
-  for (const ProgramBlock& block : program.blocks()) {
-    if (block.is_gate) {
-      objective->terms.push_back({std::make_unique<GateSparsityCost>(sparsity_weight), nullptr, {block.data}, {}});
-    }
-  }
-  for (const ParameterRangeRule& rule : options.domain_rules) {
-    for (const ProgramBlock& block : program.blocks()) {
-      if (block.holds_op_params() && block.op == rule.op && rule.param >= 0 && rule.param < block.size) {
-        objective->terms.push_back({std::make_unique<ParameterRangeCost>(rule, block.size), nullptr, {block.data}, {}});
-      }
-    }
-  }
-  for (Objective::Term& term : objective->terms) {
-    for (double* data : term.blocks) {
-      for (const ProgramBlock& block : program.blocks()) {
-        if (block.data == data) term.columns.push_back(block.column);
-      }
-    }
-  }
-}
-
-}  // namespace
-
-void Fitter::MakeObjective(const Correspondences& correspondences, Objective* objective) const {
-  BuildObjective(*program_, options_, target_.scale(), correspondences.output_to_target,
-                 correspondences.output_to_target_weight, correspondences.target_to_output,
-                 correspondences.target_to_output_weight, correspondences.boolean, correspondences.mixed, &sparsity_weight_,
-                 objective);
+void Fitter::MakeObjective(const FitCorrespondences& correspondences, Objective* objective) const {
+  BuildFitObjective(*program_, options_, target_.scale(), correspondences, &sparsity_weight_, objective);
 }
 
 double Fitter::CurrentLoss() {
-  Correspondences correspondences;
+  FitCorrespondences correspondences;
   BuildCorrespondences(options_.seed, &correspondences);
   Objective objective;
   MakeObjective(correspondences, &objective);
@@ -362,7 +119,7 @@ std::unique_ptr<ceres::Problem> Fitter::MakeCeresProblem(const Objective& object
 }
 
 void Fitter::EvaluateBothWays(ObjectiveEvaluation* own, ObjectiveEvaluation* ceres) {
-  Correspondences correspondences;
+  FitCorrespondences correspondences;
   BuildCorrespondences(options_.seed, &correspondences);
   Objective objective;
   MakeObjective(correspondences, &objective);
@@ -401,7 +158,7 @@ FreeColumns Fitter::FindFreeColumns() const {
   return columns;
 }
 
-double Fitter::Solve(const Correspondences& correspondences, double sparsity_weight, FitSummary* summary) {
+double Fitter::Solve(const FitCorrespondences& correspondences, double sparsity_weight, FitSummary* summary) {
   sparsity_weight_ = sparsity_weight;
   Objective objective;
   MakeObjective(correspondences, &objective);
@@ -521,7 +278,7 @@ double Fitter::RunStage(double sparsity_weight, FitSummary* summary) {
     // target selects) are re-resolved at each update; where the sequence no longer evaluates,
     // the last topology is kept and the point cannot be the result.
     const bool reproducible = ResolveTopology();
-    Correspondences correspondences;
+    FitCorrespondences correspondences;
     // The same seed every update: samples move smoothly with the shape, so losses compare.
     BuildCorrespondences(options_.seed, &correspondences);
     Objective objective;

@@ -120,6 +120,7 @@ struct FitSummary {
 struct Objective;         // residual blocks at fixed correspondences (solver/objective.h)
 struct ObjectiveScratch;  // its evaluation buffers
 struct FreeColumns;       // the columns a solve moves (solver/fitter_solvers.h)
+struct FitCorrespondences;  // solver/fit_correspondences.h
 
 class Fitter {
  public:
@@ -153,17 +154,16 @@ class Fitter {
   void EvaluateBothWays(ObjectiveEvaluation* own, ObjectiveEvaluation* ceres);
 
  private:
-  struct Correspondences;
   // The objective's residual blocks over the program's parameter blocks (held ones constant).
   std::unique_ptr<ceres::Problem> MakeCeresProblem(const Objective& objective) const;
   // Whether the solver holds `block` constant: fixed by the program, held in this stage, or
   // belonging to a pinned op.
   bool Held(const ProgramBlock& block) const;
-  void BuildCorrespondences(uint64_t seed, Correspondences* out);
+  void BuildCorrespondences(uint64_t seed, FitCorrespondences* out);
   // The residual blocks at fixed correspondences (the current stage's sparsity weight).
-  void MakeObjective(const Correspondences& correspondences, Objective* objective) const;
+  void MakeObjective(const FitCorrespondences& correspondences, Objective* objective) const;
   double RunStage(double sparsity_weight, FitSummary* summary);
-  double Solve(const Correspondences& correspondences, double sparsity_weight, FitSummary* summary);
+  double Solve(const FitCorrespondences& correspondences, double sparsity_weight, FitSummary* summary);
   double SolveWithCeres(const Objective& objective, FitSummary* summary);
   // The Program columns the current stage moves (not held, not constant within a block).
   FreeColumns FindFreeColumns() const;
