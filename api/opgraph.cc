@@ -87,6 +87,7 @@ void VisitRecoverOptions(Api& api, Internal& internal, const Visit& visit) {
   visit(api.time_budget_seconds, internal.time_budget_seconds);
   visit(api.max_ops, internal.max_ops);
   visit(api.min_relative_gain, internal.min_relative_gain);
+  visit(api.beam_width, internal.beam_width);
   visit(api.seed, internal.seed);
   visit(api.num_threads, internal.num_threads);
   visit(api.freeform, internal.freeform);

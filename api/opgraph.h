@@ -110,6 +110,7 @@ struct RecoverOptions {
   double time_budget_seconds;  // a wall-time cap (0: none); when it ends a run, results vary
   int max_ops;
   double min_relative_gain;    // a proposal must lower the loss by this fraction per op it adds
+  int beam_width;              // main forms the search continues from (1: greedy)
   uint64_t seed;
   int num_threads;             // candidate fits run in parallel (the result is the same for any count)
   bool freeform;               // per-vertex detail last, when it pays for itself

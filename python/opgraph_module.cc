@@ -96,7 +96,7 @@ ProgressCallback PythonProgress(py::handle on_progress) {
 }
 
 py::dict Recover(const py::object& points_or_path, const py::object& normals, int64_t work_budget,
-                 double time_budget_seconds, int max_ops, double min_relative_gain, uint64_t seed, int num_threads,
+                 double time_budget_seconds, int max_ops, double min_relative_gain, int beam_width, uint64_t seed, int num_threads,
                  bool freeform, const py::object& on_progress, int num_samples, int max_cloud_points,
                  int normal_neighbours) {
   TargetOptions target_options;
@@ -109,6 +109,7 @@ py::dict Recover(const py::object& points_or_path, const py::object& normals, in
   options.time_budget_seconds = time_budget_seconds;
   options.max_ops = max_ops;
   options.min_relative_gain = min_relative_gain;
+  options.beam_width = beam_width;
   options.seed = seed;
   options.num_threads = num_threads;
   options.freeform = freeform;
@@ -183,7 +184,8 @@ PYBIND11_MODULE(opgraph, module) {
              py::arg("work_budget") = recover_defaults.work_budget,
              py::arg("time_budget_seconds") = recover_defaults.time_budget_seconds,
              py::arg("max_ops") = recover_defaults.max_ops,
-             py::arg("min_relative_gain") = recover_defaults.min_relative_gain, py::arg("seed") = recover_defaults.seed,
+             py::arg("min_relative_gain") = recover_defaults.min_relative_gain,
+             py::arg("beam_width") = recover_defaults.beam_width, py::arg("seed") = recover_defaults.seed,
              py::arg("num_threads") = recover_defaults.num_threads, py::arg("freeform") = recover_defaults.freeform,
              py::arg("on_progress") = py::none(), py::arg("num_samples") = target_defaults.num_samples,
              py::arg("max_cloud_points") = target_defaults.max_cloud_points,

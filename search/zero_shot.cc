@@ -19,26 +19,33 @@ class StagedSearch {
   StagedSearch(const Target& target, const ZeroShotOptions& options) : target_(target), evaluator_(target, options) {}
 
   ZeroShotResult Run() {
-    Trial best = FitGlobalAffine();
-    if (!best.ok) throw std::runtime_error("the global affine fit failed");
-    best = Smoothing(best);
-    best = ChooseMainForm(best);
-    // Stages feed each other (a bend lets a profile help, a profile gives extrusions faces), so
-    // they repeat until a whole pass changes nothing.
-    // Rounding comes after the extrusions, as a modeller would bevel: a bevel first would round
-    // the cage toward a protrusion and split its faces below the extrusions' support.
-    const Stage passes[] = {&StagedSearch::Slab,     &StagedSearch::Profiles, &StagedSearch::LoopMoves,
-                            &StagedSearch::Deforms,  &StagedSearch::Ridges,   &StagedSearch::Holes,
-                            &StagedSearch::RepeatDetails, &StagedSearch::Booleans, &StagedSearch::Facets,
-                            &StagedSearch::Grids,    &StagedSearch::Bevels,   &StagedSearch::Smoothing};
-    for (int pass = 0; pass < 3 && evaluator_.InBudget(); ++pass) {
-      const double before = best.loss;
-      for (const Stage stage : passes) best = (this->*stage)(best);
-      if (!(best.loss < before)) break;
+    Trial start = FitGlobalAffine();
+    if (!start.ok) throw std::runtime_error("the global affine fit failed");
+    start = Smoothing(start);
+    // A beam over the first decision, which shapes the rest of a staged search most: the best
+    // few main forms each get the passes, and the best result after the price of its ops wins.
+    // The first branch is the best-scored main form, so a budget that ends early still leaves
+    // the greedy search's result.
+    const std::vector<Branch> branches = ChooseMainForms(start);
+    Trial chosen;
+    double chosen_score = kInfinity;
+    for (size_t b = 0; b < branches.size(); ++b) {
+      if (b > 0 && !evaluator_.InBudget()) break;
+      if (branches.size() > 1) {
+        evaluator_.Note("beam " + std::to_string(b + 1) + " of " + std::to_string(branches.size()) + ": " +
+                        branches[b].name);
+      }
+      Trial trial = Passes(branches[b].trial);
+      // Last, once the structure has taken what it explains.
+      trial = ConsiderRounds(&evaluator_, "pose", trial, ProposePoseDrops(trial.layout));
+      const double score = Score(start, trial);
+      if (score < chosen_score) chosen = trial, chosen_score = score;
     }
-    // Last, once the structure has taken what it explains.
-    best = ConsiderRounds(&evaluator_, "pose", best, ProposePoseDrops(best.layout));
-    return Finish(&evaluator_, best);
+    if (branches.size() > 1) {
+      evaluator_.Note("beam: kept the result with loss " + std::to_string(chosen.loss) + " and " +
+                      std::to_string(chosen.layout.NumOps()) + " ops");
+    }
+    return Finish(&evaluator_, chosen);
   }
 
  private:
@@ -91,28 +98,59 @@ class StagedSearch {
     return rotated;
   }
 
-  // The first decision shapes the rest of a greedy search (a profile accepted for a small gain
+  // Stages feed each other (a bend lets a profile help, a profile gives extrusions faces), so
+  // they repeat until a whole pass changes nothing.
+  // Rounding comes after the extrusions, as a modeller would bevel: a bevel first would round
+  // the cage toward a protrusion and split its faces below the extrusions' support.
+  Trial Passes(Trial best) {
+    const Stage passes[] = {&StagedSearch::Slab,     &StagedSearch::Profiles, &StagedSearch::LoopMoves,
+                            &StagedSearch::Deforms,  &StagedSearch::Ridges,   &StagedSearch::Holes,
+                            &StagedSearch::RepeatDetails, &StagedSearch::Booleans, &StagedSearch::Facets,
+                            &StagedSearch::Grids,    &StagedSearch::Bevels,   &StagedSearch::Smoothing};
+    for (int pass = 0; pass < 3 && evaluator_.InBudget(); ++pass) {
+      const double before = best.loss;
+      for (const Stage stage : passes) best = (this->*stage)(best);
+      if (!(best.loss < before)) break;
+    }
+    return best;
+  }
+
+  // A trial's loss after the price of the ops it adds to `start` (lower is better).
+  double Score(const Trial& start, const Trial& trial) const {
+    if (!trial.ok) return kInfinity;
+    return trial.loss / Price(evaluator_.options(), trial.layout.NumOps() - start.layout.NumOps());
+  }
+
+  struct Branch {
+    Trial trial;
+    std::string name;
+    double score = 0;
+  };
+
+  // The first decision shapes the rest of a staged search (a profile accepted for a small gain
   // blocks the extrusion that explains a boss; a small bend blocks a profile), so it is made
-  // best-first: every stage runs from the pose (a rounded box is a Bevel of it), and the one
-  // with the lowest loss after the price of its ops wins. The passes then add to it in a fixed
-  // order.
-  Trial ChooseMainForm(const Trial& start) {
+  // best-first: every stage runs from the pose (a rounded box is a Bevel of it), each result
+  // scored by its loss after the price of its ops. Returns the best `beam_width` of them,
+  // best first (the pose itself among them when it scores so).
+  std::vector<Branch> ChooseMainForms(const Trial& start) {
     const std::pair<const char*, Stage> stages[] = {
         {"slab", &StagedSearch::Slab},   {"profile", &StagedSearch::Profiles}, {"deform", &StagedSearch::Deforms},
         {"ridge", &StagedSearch::Ridges}, {"hole", &StagedSearch::Holes},       {"detail", &StagedSearch::RepeatDetails},
         {"bevel", &StagedSearch::Bevels},  {"mirror", &StagedSearch::Mirror}};
-    Trial chosen = start;
-    double chosen_score = start.loss;
-    std::string chosen_stage;
+    std::vector<Branch> candidates = {{start, "the pose alone", start.loss}};
     for (const auto& [name, stage] : stages) {
       if (!evaluator_.InBudget()) break;
       const Trial trial = (this->*stage)(start);
-      const int added = trial.layout.NumOps() - start.layout.NumOps();
-      const double score = trial.ok ? trial.loss / Price(evaluator_.options(), added) : kInfinity;
-      if (score < chosen_score) chosen = trial, chosen_score = score, chosen_stage = name;
+      if (trial.layout.NumOps() == start.layout.NumOps()) continue;  // the stage added nothing
+      candidates.push_back({trial, std::string("the ") + name + " stage's result", Score(start, trial)});
     }
-    if (!chosen_stage.empty()) evaluator_.Log("main form", start, chosen, true, "the " + chosen_stage + " stage's result");
-    return chosen;
+    std::stable_sort(candidates.begin(), candidates.end(),
+                     [](const Branch& a, const Branch& b) { return a.score < b.score; });
+    candidates.resize(std::min<size_t>(candidates.size(), evaluator_.options().beam_width));
+    if (candidates.front().trial.layout.NumOps() != start.layout.NumOps()) {
+      evaluator_.Log("main form", start, candidates.front().trial, true, candidates.front().name);
+    }
+    return candidates;
   }
 
   // Loop-cut grids give faces where extrusions can start. Cuts alone do not change the surface,
@@ -195,45 +233,6 @@ class StagedSearch {
 };
 
 }  // namespace
-
-FitCostSummary SummariseFitCosts(const std::vector<FitCost>& costs) {
-  FitCostSummary summary;
-  double work = 0, seconds = 0;
-  std::vector<double> per_unit;
-  for (const FitCost& cost : costs) {
-    if (cost.work <= 0 || cost.seconds < 1e-3) continue;
-    work += static_cast<double>(cost.work), seconds += cost.seconds;
-    per_unit.push_back(cost.seconds / static_cast<double>(cost.work));
-  }
-  summary.fits = static_cast<int>(per_unit.size());
-  if (per_unit.empty()) return summary;
-  const double mean = seconds / work;
-  summary.microseconds_per_unit = 1e6 * mean;
-  std::sort(per_unit.begin(), per_unit.end());
-  auto percentile = [&](double q) { return per_unit[static_cast<size_t>(q * (per_unit.size() - 1))] / mean; };
-  summary.ratio_p10 = percentile(0.1), summary.ratio_p90 = percentile(0.9);
-  return summary;
-}
-
-const char* SearchEndName(SearchEnd end) {
-  switch (end) {
-    case SearchEnd::kComplete: return "complete";
-    case SearchEnd::kWorkBudget: return "work budget";
-    case SearchEnd::kTimeBudget: return "time budget";
-    case SearchEnd::kCancelled: return "cancelled";
-  }
-  return "unknown";
-}
-
-std::string ZeroShotOptions::Check() const {
-  if (work_budget < 1) return "work budget must be positive";
-  if (!(time_budget_seconds >= 0)) return "time budget must be positive, or 0 for none";
-  if (max_ops < 3) return "max ops must be at least 3";
-  if (max_faces < 1 || max_faces > kMaxFacesCeiling) return "max faces must be in [1, " + std::to_string(kMaxFacesCeiling) + "]";
-  if (!(min_relative_gain >= 0 && min_relative_gain < 1)) return "min relative gain must be in [0, 1)";
-  if (num_threads < 1) return "threads must be at least 1";
-  return "";
-}
 
 ZeroShotResult RecoverSequence(const Target& target, const ZeroShotOptions& options) {
   const std::string problem = options.Check();

@@ -67,6 +67,8 @@ struct ZeroShotOptions {
   // The most faces a step may have (Sequence::max_faces): a layout beyond it is not fitted.
   int64_t max_faces = kDefaultMaxFaces;
   double min_relative_gain = 0.08;  // a proposal must lower the loss by this fraction
+  // Main forms (the first decision) the passes run from; the best result wins (1: greedy).
+  int beam_width = 3;
   uint64_t seed = 1;
   // Independent candidate fits run on this many threads; each fit runs on one (so the result
   // is the same for every thread count).

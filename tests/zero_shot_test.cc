@@ -5,6 +5,7 @@
 
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <cstdlib>
 #include <filesystem>
 #include <fstream>
@@ -137,6 +138,37 @@ TEST(ZeroShot, DeterministicForASeed) {
   EXPECT_EQ(first.work, second.work);
   EXPECT_EQ(first.decisions, second.decisions);
   EXPECT_EQ(first.sequence.dump(), second.sequence.dump());
+}
+
+// The beam over main forms: its first branch is the greedy search (the same decisions, the
+// same fits), the other branches follow, and the kept result is one of the branches'.
+TEST(ZeroShot, TheBeamsFirstBranchIsTheGreedySearch) {
+  const Mesh target_mesh = BuildMesh(kModellerShapes[2][1]);  // the bench: slab, profile or details
+  Target target(target_mesh, {}, TargetOptions());
+  ZeroShotOptions options;
+  options.work_budget = 400000;
+  options.beam_width = 1;
+  const ZeroShotResult greedy = RecoverSequence(target, options);
+  options.beam_width = 3;
+  const ZeroShotResult beam = RecoverSequence(target, options);
+  ASSERT_EQ(greedy.end, SearchEnd::kComplete);
+  auto find = [&](const std::string& prefix) {
+    return std::find_if(beam.decisions.begin(), beam.decisions.end(),
+                        [&](const std::string& line) { return line.rfind(prefix, 0) == 0; });
+  };
+  const auto first = find("[zero-shot] beam 1 of "), second = find("[zero-shot] beam 2 of ");
+  ASSERT_NE(first, beam.decisions.end());
+  ASSERT_NE(second, beam.decisions.end());
+  // Before the second branch, the beam's log is the greedy search's, line for line.
+  std::vector<std::string> before_second(beam.decisions.begin(), first);
+  before_second.insert(before_second.end(), first + 1, second);
+  ASSERT_LE(before_second.size(), greedy.decisions.size());
+  EXPECT_TRUE(std::equal(before_second.begin(), before_second.end(), greedy.decisions.begin()));
+  EXPECT_NE(find("[zero-shot] beam: kept the result"), beam.decisions.end());
+  EXPECT_GT(beam.num_fits, greedy.num_fits);
+  std::cout << "[beam] greedy: loss " << greedy.loss << ", " << greedy.sequence["operations"].size() << " ops, "
+            << greedy.num_fits << " fits; beam of 3: loss " << beam.loss << ", " << beam.sequence["operations"].size()
+            << " ops, " << beam.num_fits << " fits\n";
 }
 
 TEST(ZeroShot, FitCostSummary) {
