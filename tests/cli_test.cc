@@ -71,7 +71,7 @@ TEST(FitSequenceCommandLine, HelpListsEveryFlagWithItsDefaultAndDoesNoWork) {
   EXPECT_EQ(help.exit_code, 0);
   EXPECT_FALSE(fs::exists(dir / "out"));
   for (const char* flag : {"--input", "--out", "--init", "--work-budget", "--time-budget", "--max-ops", "--max-faces", "--seed",
-                           "--threads", "--optimizer", "--loss", "--fit-gates", "--samples", "--freeform",
+                           "--threads", "--beam-width", "--optimizer", "--loss", "--fit-gates", "--samples", "--freeform",
                            "--blender-axes", "--quiet"}) {
     EXPECT_NE(DefaultIn(help.out, flag), "(not listed)") << flag;
   }
@@ -81,7 +81,8 @@ TEST(FitSequenceCommandLine, HelpListsEveryFlagWithItsDefaultAndDoesNoWork) {
   EXPECT_EQ(DefaultIn(help.out, "--seed"), std::to_string(FitterOptions().seed));
   EXPECT_EQ(DefaultIn(help.out, "--threads"), std::to_string(HardwareThreads()));
   EXPECT_EQ(DefaultIn(help.out, "--time-budget"), "0");
-  EXPECT_EQ(DefaultIn(help.out, "--optimizer"), "\"ceres\"");
+  EXPECT_EQ(DefaultIn(help.out, "--beam-width"), std::to_string(ZeroShotOptions().beam_width));
+  EXPECT_EQ(DefaultIn(help.out, "--optimizer"), "\"lm\"");
   EXPECT_EQ(DefaultIn(help.out, "--blender-axes"), "\"import\"");
   EXPECT_EQ(DefaultIn(help.out, "--freeform"), "true");
   EXPECT_EQ(help.out.find("--minloglevel"), std::string::npos) << "glog's flags are not fit_sequence's";
@@ -130,6 +131,7 @@ TEST(FitSequenceCommandLine, BadCommandLineNamesTheArgument) {
       {" --no-input", "fit_sequence: unknown flag '--no-input'"},
       {" --quiet=maybe", "fit_sequence: --quiet: expected true or false, not 'maybe'"},
       {" --seed=-1", "fit_sequence: --seed: expected an integer >= 0, not '-1'"},
+      {" --beam-width 0", "fit_sequence: --beam-width: expected an integer in [1, 16]"},
       {" --flagfile " + ShellQuote((dir / "bad_flags.txt").string()), "unknown flag '--bogus'"},
       {" --flagfile " + ShellQuote((dir / "missing.txt").string()), "fit_sequence: --flagfile: cannot open"},
   };
