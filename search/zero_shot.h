@@ -52,7 +52,7 @@ const char* SearchEndName(SearchEnd end);
 
 struct ZeroShotOptions {
   // The budget in work: Jacobian evaluations of the fitted programs times the parameters they
-  // differentiate and a size factor, summed over every fit (about 200 us a unit here;
+  // differentiate and a size factor, summed over every fit (about 140 us a unit here with the dense LM;
   // docs/zero-shot.md). Proposals stop at 65% of it; the finishing steps follow. Work does not
   // depend on the machine, its load or the thread count, so a seed gives the same result
   // everywhere.
