@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <cmath>
 #include <limits>
+#include <vector>
 
 #include <Eigen/Cholesky>
 
@@ -36,15 +37,34 @@ double ProjectedGradientNorm(const Point& point, const Eigen::VectorXd& lower, c
   return (point.x - moved).cwiseAbs().maxCoeff();
 }
 
-// The Levenberg-Marquardt step at `radius`, Jacobi-scaled as Ceres scales it: with
-// S = diag(1 / (1 + sqrt(diag J^T J))), solves (S J^T J S + D / radius) u = -S J^T r, D the
-// clamped diagonal of S J^T J S, and returns S u.
-Eigen::VectorXd ComputeStep(const Point& point, double radius) {
+// Which variables sit on a bound that the descent direction -g presses against: the step
+// holds them (their rows and columns drop out of the system), so the free ones get the step
+// that is best with them held instead of one computed as if they could move, then cut off.
+std::vector<char> ActiveBounds(const Point& point, const Eigen::VectorXd& lower, const Eigen::VectorXd& upper) {
+  std::vector<char> active(point.x.size(), 0);
+  for (int i = 0; i < point.x.size(); ++i) {
+    active[i] = (point.x[i] <= lower[i] && point.jtr[i] > 0) || (point.x[i] >= upper[i] && point.jtr[i] < 0);
+  }
+  return active;
+}
+
+// The Levenberg-Marquardt step at `radius` over the free variables, Jacobi-scaled as Ceres
+// scales it: with S = diag(1 / (1 + sqrt(diag J^T J))), solves (S J^T J S + D / radius) u =
+// -S J^T r, D the clamped diagonal of S J^T J S, and returns S u (0 for held variables).
+Eigen::VectorXd ComputeStep(const Point& point, const std::vector<char>& active, double radius) {
   const Eigen::VectorXd scale = (point.jtj.diagonal().cwiseMax(0).cwiseSqrt().array() + 1).inverse().matrix();
   Eigen::MatrixXd scaled = scale.asDiagonal() * point.jtj * scale.asDiagonal();
+  Eigen::VectorXd rhs = -scale.cwiseProduct(point.jtr);
   const Eigen::VectorXd damping = scaled.diagonal().cwiseMax(1e-6).cwiseMin(1e32) / radius;
   scaled.diagonal() += damping;
-  const Eigen::VectorXd u = scaled.ldlt().solve(-scale.cwiseProduct(point.jtr));
+  for (int i = 0; i < static_cast<int>(active.size()); ++i) {
+    if (!active[i]) continue;
+    scaled.row(i).setZero();
+    scaled.col(i).setZero();
+    scaled(i, i) = 1;
+    rhs[i] = 0;
+  }
+  const Eigen::VectorXd u = scaled.ldlt().solve(rhs);
   return scale.cwiseProduct(u);
 }
 
@@ -74,7 +94,8 @@ DenseLmSummary MinimizeDenseLm(DenseLmProblem* problem, const Eigen::VectorXd& l
   while (!converged && summary.iterations < options.max_iterations &&
          !(options.deadline && options.deadline->Passed())) {
     ++summary.iterations;
-    const Eigen::VectorXd candidate = (point.x + ComputeStep(point, radius)).cwiseMax(lower).cwiseMin(upper);
+    const Eigen::VectorXd candidate =
+        (point.x + ComputeStep(point, ActiveBounds(point, lower, upper), radius)).cwiseMax(lower).cwiseMin(upper);
     const Eigen::VectorXd step = candidate - point.x;
     if (step.norm() <= options.parameter_tolerance * (point.x.norm() + options.parameter_tolerance)) break;
     const double predicted = PredictedReduction(point, step);

@@ -7,10 +7,11 @@
 // The strategy is Ceres' Levenberg-Marquardt (trust-region form): Jacobi-scaled normal
 // equations, damping diag(J^T J) / radius, the radius grown by 1 / max(1/3, 1 - (2 rho - 1)^3)
 // after a step whose actual / predicted reduction rho exceeds min_relative_decrease, and cut by a
-// doubling factor otherwise. Box bounds: the step is projected onto the box and its predicted
-// reduction recomputed for the projected step (no line search). Stops at max_iterations trial
-// steps, or when the cost's relative change, the step or the projected gradient falls below
-// its tolerance, or at the deadline.
+// doubling factor otherwise. Box bounds: variables on a bound that the gradient presses against
+// are held for the step (the system is solved over the others), then the step is projected onto
+// the box and its predicted reduction recomputed for the projected step (no line search).
+// Stops at max_iterations trial steps, or when the cost's relative change, the step or the
+// projected gradient falls below its tolerance, or at the deadline.
 //
 // The cost is C(x) = sum of squares (no factor 1/2): its gradient is 2 J^T r and its model
 // C + 2 g.d + d^T (J^T J) d.

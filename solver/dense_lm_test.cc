@@ -65,7 +65,7 @@ class CurveProblem : public DenseLmProblem {
   }
 
  private:
-  const Samples& samples_;
+  Samples samples_;  // a copy: callers pass temporaries
 };
 
 Eigen::VectorXd Minimize(const Samples& samples, Eigen::VectorXd lower, Eigen::VectorXd upper, Eigen::VectorXd x,
