@@ -169,7 +169,9 @@ class ReadInputErrors : public ::testing::TestWithParam<BadFile> {};
 
 TEST_P(ReadInputErrors, NameTheProblemInOneLine) {
   const BadFile& bad = GetParam();
-  const fs::path dir = TestDir("bad");
+  // A folder per case: ctest runs the cases in parallel processes, and a shared folder that one
+  // case clears while another reads from it made both fail now and then.
+  const fs::path dir = TestDir(std::string("bad_") + bad.name);
   const fs::path path = dir / bad.name;
   if (bad.contents != nullptr) WriteText(path, bad.contents);
   try {
