@@ -150,6 +150,7 @@ int Run(int argc, char** argv) {
   if (zero_shot) {
     metrics["fit"] = {{"final_loss", Number(recovered.loss)},
                       {"fits", recovered.num_fits},
+                      {"fits_ahead", recovered.num_fits_ahead},
                       {"work_per_time", WorkPerTime(recovered.fit_costs)},
                       {"work", recovered.work},
                       {"work_budget", zero_shot_options.work_budget},

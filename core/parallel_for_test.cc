@@ -5,6 +5,7 @@
 #include <atomic>
 #include <stdexcept>
 #include <string>
+#include <thread>
 #include <vector>
 
 namespace opgraph {
@@ -17,6 +18,19 @@ TEST(ParallelFor, RunsEveryTaskOnceForAnyThreadCount) {
     for (const std::atomic<int>& count : calls) EXPECT_EQ(count.load(), 1) << threads << " threads";
   }
   ParallelFor(0, 4, [](int) { FAIL() << "no task to run"; });
+}
+
+TEST(ParallelFor, TheCallersThreadRunsTaskZero) {
+  const std::thread::id caller = std::this_thread::get_id();
+  for (int threads : {1, 2, 4}) {
+    for (int attempt = 0; attempt < 20; ++attempt) {
+      std::thread::id first;
+      ParallelFor(8, threads, [&](int i) {
+        if (i == 0) first = std::this_thread::get_id();
+      });
+      EXPECT_EQ(first, caller) << threads << " threads";
+    }
+  }
 }
 
 TEST(ParallelFor, RethrowsTheLowestIndexErrorAfterAllTasks) {

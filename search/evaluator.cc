@@ -97,19 +97,78 @@ bool Evaluator::NeedsFit(const Layout& layout) const {
   return cache_.count(key) == 0 && prefetched_.count(key) == 0;
 }
 
-void Evaluator::Prefetch(const std::vector<Layout>& layouts) {
+void Evaluator::Prefetch(const std::vector<Layout>& layouts, FitPrecision precision,
+                         const std::function<void()>& meanwhile) {
   std::vector<const Layout*> jobs;
   std::vector<std::string> keys;
   for (const Layout& layout : layouts) {
-    std::string key = Key(layout, FitPrecision::kSearch);
-    if (cache_.count(key) || prefetched_.count(key) || std::count(keys.begin(), keys.end(), key)) continue;
+    std::string key = Key(layout, precision);
+    if (Threads() < 2 || cache_.count(key) || prefetched_.count(key) ||
+        std::count(keys.begin(), keys.end(), key)) {
+      continue;
+    }
     jobs.push_back(&layout);
     keys.push_back(std::move(key));
   }
+  // Task 0, on the calling thread, is `meanwhile`; the fits touch no member until they are kept.
   std::vector<Outcome> outcomes(jobs.size());
-  ParallelFor(static_cast<int>(jobs.size()), options_.num_threads,
-              [&](int j) { outcomes[j] = FitUncached(*jobs[j], FitPrecision::kSearch); });
+  const int borrowed = BorrowThreads(static_cast<int>(jobs.size()) + 1 - options_.num_threads);
+  ParallelFor(static_cast<int>(jobs.size()) + 1, options_.num_threads + borrowed, [&](int j) {
+    if (j == 0) {
+      if (meanwhile) meanwhile();
+    } else {
+      outcomes[j - 1] = FitUncached(*jobs[j - 1], precision);
+    }
+  });
+  ReturnThreads(borrowed);
   for (size_t j = 0; j < jobs.size(); ++j) prefetched_.emplace(std::move(keys[j]), std::move(outcomes[j]));
+}
+
+std::vector<Evaluator> Evaluator::Speculators(int count, int num_threads) const {
+  const auto line_work = std::make_shared<std::vector<std::atomic<int64_t>>>(count);
+  for (std::atomic<int64_t>& work : *line_work) work = 0;
+  const auto spare_threads = std::make_shared<std::atomic<int>>(0);
+  std::vector<Evaluator> speculators(count, *this);
+  for (int i = 0; i < count; ++i) {
+    Evaluator& speculator = speculators[i];
+    speculator.options_.num_threads = num_threads;
+    speculator.options_.progress = nullptr;
+    if (i > 0) speculator.options_.on_progress = nullptr;
+    speculator.speculative_ = true;
+    speculator.line_work_ = line_work;
+    speculator.line_ = i;
+    speculator.work_at_start_ = work_;
+    speculator.spare_threads_ = spare_threads;
+  }
+  return speculators;
+}
+
+void Evaluator::LendThreads() {
+  if (spare_threads_) *spare_threads_ += options_.num_threads;
+}
+
+int Evaluator::Threads() const { return options_.num_threads + (spare_threads_ ? spare_threads_->load() : 0); }
+
+int Evaluator::BorrowThreads(int wanted) const {
+  if (!spare_threads_) return 0;
+  int spare = spare_threads_->load();
+  while (spare > 0 && wanted > 0) {
+    const int taken = std::min(spare, wanted);
+    if (spare_threads_->compare_exchange_weak(spare, spare - taken)) return taken;
+  }
+  return 0;
+}
+
+void Evaluator::ReturnThreads(int count) const {
+  if (count > 0) *spare_threads_ += count;
+}
+
+void Evaluator::Adopt(Evaluator* speculator) {
+  for (auto& [key, outcome] : speculator->speculated_) {
+    if (cache_.count(key) == 0 && prefetched_.count(key) == 0) prefetched_.emplace(key, std::move(outcome));
+  }
+  speculator->speculated_.clear();
+  if (*speculation_cancelled_) cancelled_ = true;
 }
 
 std::vector<Trial> Evaluator::FitAll(const std::vector<Layout>& layouts, FitPrecision precision) {
@@ -138,10 +197,13 @@ std::vector<Trial> Evaluator::FitAll(const std::vector<Layout>& layouts, FitPrec
     } else {
       outcomes[j] = std::move(prefetched->second);
       prefetched_.erase(prefetched);
+      num_fits_ahead_ += outcomes[j].fitted ? 1 : 0;
     }
   }
-  ParallelFor(static_cast<int>(to_fit.size()), options_.num_threads,
+  const int borrowed = BorrowThreads(static_cast<int>(to_fit.size()) - options_.num_threads);
+  ParallelFor(static_cast<int>(to_fit.size()), options_.num_threads + borrowed,
               [&](int f) { outcomes[to_fit[f]] = FitUncached(layouts[jobs[to_fit[f]]], precision); });
+  ReturnThreads(borrowed);
   for (size_t j = 0; j < jobs.size(); ++j) {
     const Outcome& outcome = outcomes[j];
     num_fits_ += outcome.fitted ? 1 : 0;
@@ -149,7 +211,9 @@ std::vector<Trial> Evaluator::FitAll(const std::vector<Layout>& layouts, FitPrec
     if (outcome.fitted) fit_costs_.push_back({outcome.work, outcome.seconds});
     if (!outcome.error.empty()) Note("fit failed: " + outcome.error);
     cache_.emplace(keys[jobs[j]], outcome.trial);
+    if (speculative_) speculated_.emplace_back(keys[jobs[j]], outcome);
   }
+  if (speculative_) (*line_work_)[line_] = work_ - work_at_start_;
   for (size_t i = 0; i < layouts.size(); ++i) {
     if (job_of[i] >= 0) trials[i] = outcomes[job_of[i]].trial;
   }
@@ -170,9 +234,13 @@ FitSummary Evaluator::FitGates(Sequence* sequence, const Json& document, const V
 
 bool Evaluator::InBudget() const {
   if (search_end_ != SearchEnd::kComplete) return false;
+  if (speculative_ && *speculation_cancelled_) cancelled_ = true;
+  // A speculator's line runs for real after the lines before it: their work counts too.
+  int64_t work = work_;
+  for (int line = 0; speculative_ && line < line_; ++line) work += (*line_work_)[line];
   if (cancelled_) {
     search_end_ = SearchEnd::kCancelled;
-  } else if (!(static_cast<double>(work_) < kSearchShare * static_cast<double>(options_.work_budget))) {
+  } else if (!(static_cast<double>(work) < kSearchShare * static_cast<double>(options_.work_budget))) {
     search_end_ = SearchEnd::kWorkBudget;
   } else if (options_.time_budget_seconds > 0 && !(Seconds() < kSearchShare * options_.time_budget_seconds)) {
     search_end_ = SearchEnd::kTimeBudget;
@@ -208,7 +276,10 @@ void Evaluator::Report(const std::string& line) const {
   progress.ops = best_ops_;
   progress.loss = best_loss_;
   progress.line = line;
-  if (!options_.on_progress(progress)) cancelled_ = true;
+  if (!options_.on_progress(progress)) {
+    cancelled_ = true;
+    if (speculative_) *speculation_cancelled_ = true;
+  }
 }
 
 void Evaluator::Log(const std::string& stage, const Trial& before, const Trial& after, bool accepted,
@@ -223,6 +294,7 @@ void Evaluator::Log(const std::string& stage, const Trial& before, const Trial& 
 }
 
 void Evaluator::Note(const std::string& line) {
+  if (speculative_) return Report();
   decisions_.push_back("[zero-shot] " + line);
   if (options_.progress != nullptr) *options_.progress << decisions_.back() << std::endl;
   Report(decisions_.back());

@@ -5,10 +5,13 @@
 // so the log, the cache and the work count do not depend on which thread fitted what.
 #pragma once
 
+#include <atomic>
 #include <chrono>
 #include <cstdint>
+#include <functional>
 #include <limits>
 #include <map>
+#include <memory>
 #include <string>
 #include <vector>
 
@@ -35,9 +38,26 @@ class Evaluator {
   // outcomes aside. A later Fit or FitAll of the same document takes its outcome (counting its
   // work and logging its error then), as if it fitted it then, so prefetching changes the wall
   // time and nothing else.
-  void Prefetch(const std::vector<Layout>& layouts);
+  // With `meanwhile`, it runs on the calling thread while the layouts are fitted on the others
+  // (it may use this evaluator). With one thread, only `meanwhile` runs.
+  void Prefetch(const std::vector<Layout>& layouts, FitPrecision precision = FitPrecision::kSearch,
+                const std::function<void()>& meanwhile = nullptr);
   // Whether Fit(layout) would fit it now (not cached, not prefetched).
   bool NeedsFit(const Layout& layout) const;
+  // Speculation on `count` lines of search (the beam's branches) that will run here one after
+  // another: copies of this evaluator, each fitting on `num_threads` threads, writing no log
+  // lines and keeping the outcome of every fit it takes; the first reports progress (without
+  // decision lines) to the options' callback, which may cancel. Line i stops where the work of
+  // lines 0..i-1 so far and its own have spent the budget (its real run cannot go further).
+  // Adopt() then keeps a speculator's outcomes aside here as Prefetch() does, so a later run of
+  // the same line here takes them, as if it fitted them then.
+  std::vector<Evaluator> Speculators(int count, int num_threads) const;
+  void Adopt(Evaluator* speculator);
+  // A speculator whose line has ended, with no line left to start: its threads help the lines
+  // still running (their batches and prefetches).
+  void LendThreads();
+  // The threads this evaluator's batches may use now: the options' and those lent to it.
+  int Threads() const;
   // The finishing gate fit of `sequence` (parsed from `document`): op gates fitted with the
   // sparsity stage, ops below the threshold pruned. Throws the fitter's errors.
   FitSummary FitGates(Sequence* sequence, const Json& document, const Vec3d& half_extent);
@@ -89,6 +109,7 @@ class Evaluator {
   const Target& target() const { return target_; }
   const ZeroShotOptions& options() const { return options_; }
   int num_fits() const { return num_fits_; }
+  int num_fits_ahead() const { return num_fits_ahead_; }
   const std::vector<std::string>& decisions() const { return decisions_; }
 
  private:
@@ -108,12 +129,12 @@ class Evaluator {
 
   std::chrono::steady_clock::time_point start_;
   std::map<std::string, Trial> cache_;
-  std::map<std::string, Outcome> prefetched_;  // by the search precision's key
+  std::map<std::string, Outcome> prefetched_;  // by key (precision and document)
   mutable SearchEnd search_end_ = SearchEnd::kComplete;
   mutable bool cancelled_ = false;
   std::string stage_ = "search";
   double stage_fraction_ = 0;  // after the search: the finishing step's start
-  int num_fits_ = 0;
+  int num_fits_ = 0, num_fits_ahead_ = 0;
   int64_t work_ = 0;
   std::vector<FitCost> fit_costs_;
   // The best trial logged as accepted, for progress.
@@ -121,6 +142,21 @@ class Evaluator {
   double best_loss_ = std::numeric_limits<double>::infinity();
   std::vector<std::string> decisions_;
   std::vector<std::string> cut_by_time_;
+  // A speculator's: no log lines; the outcomes of its fits, by key, for Adopt().
+  bool speculative_ = false;
+  std::vector<std::pair<std::string, Outcome>> speculated_;
+  // The work each line of a speculation has done so far, shared by its speculators; this one's
+  // line, and its work when the speculation began.
+  std::shared_ptr<std::vector<std::atomic<int64_t>>> line_work_;
+  int line_ = 0;
+  int64_t work_at_start_ = 0;
+  // Threads lent by the speculators whose lines have ended, shared by those still running.
+  std::shared_ptr<std::atomic<int>> spare_threads_;
+  int BorrowThreads(int wanted) const;
+  void ReturnThreads(int count) const;
+  // Set when the callback cancels during speculation: every speculator (and, at Adopt, this
+  // evaluator) stops.
+  std::shared_ptr<std::atomic<bool>> speculation_cancelled_ = std::make_shared<std::atomic<bool>>(false);
 };
 
 }  // namespace opgraph

@@ -94,7 +94,10 @@ Json PruneOrPolish(Evaluator* evaluator, const Trial& best, double* loss) {
   Json document = searched;
   try {
     Sequence sequence = evaluator->Parse(searched);
-    const FitSummary summary = evaluator->FitGates(&sequence, searched, best.layout.half_extent);
+    // The polishing fit, needed when pruning does not pay, is made beside the gate fit.
+    FitSummary summary;
+    evaluator->Prefetch({best.layout}, FitPrecision::kFinal,
+                        [&] { summary = evaluator->FitGates(&sequence, searched, best.layout.half_extent); });
     if (summary.cut_by_time) evaluator->NoteCutByTime("gate fit", "prune: the gate fit was cut by the time budget");
     Json fitted = SequenceToJson(sequence);
     Sequence replay = evaluator->Parse(fitted);
@@ -145,6 +148,7 @@ ZeroShotResult Finish(Evaluator* evaluator, const Trial& best) {
   result.sequence = document;
   result.loss = loss;
   result.num_fits = evaluator->num_fits();
+  result.num_fits_ahead = evaluator->num_fits_ahead();
   result.seconds = evaluator->Seconds();
   result.work = evaluator->work();
   result.fit_costs = evaluator->fit_costs();

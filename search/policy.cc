@@ -27,7 +27,7 @@ void Alternatives(const Layout& best, const Round& round, std::vector<Layout>* l
 // while a round has fewer alternatives than there are threads, the next rounds' alternatives on
 // the same best are fitted beside them (wasted only when a round is accepted).
 void PrefetchAhead(Evaluator* evaluator, const Layout& best, const std::vector<Round>& rounds, size_t first) {
-  const int threads = evaluator->options().num_threads;
+  const int threads = evaluator->Threads();
   if (threads < 2 || !evaluator->InBudget()) return;
   constexpr size_t kMaxRoundsAhead = 8;
   std::vector<Layout> layouts, round_layouts;

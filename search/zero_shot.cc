@@ -1,8 +1,12 @@
 #include "search/zero_shot.h"
 
 #include <algorithm>
+#include <atomic>
 #include <cmath>
+#include <functional>
 #include <stdexcept>
+
+#include "core/parallel_for.h"
 
 #include "search/evaluator.h"
 #include "search/finish.h"
@@ -27,6 +31,9 @@ class StagedSearch {
     // The first branch is the best-scored main form, so a budget that ends early still leaves
     // the greedy search's result.
     const std::vector<Branch> branches = ChooseMainForms(start);
+    std::vector<Task> lines;
+    for (const Branch& branch : branches) lines.push_back([&branch](StagedSearch* search) { search->Follow(branch.trial); });
+    Speculate(lines);
     Trial chosen;
     double chosen_score = kInfinity;
     for (size_t b = 0; b < branches.size(); ++b) {
@@ -35,9 +42,7 @@ class StagedSearch {
         evaluator_.Note("beam " + std::to_string(b + 1) + " of " + std::to_string(branches.size()) + ": " +
                         branches[b].name);
       }
-      Trial trial = Passes(branches[b].trial);
-      // Last, once the structure has taken what it explains.
-      trial = ConsiderRounds(&evaluator_, "pose", trial, ProposePoseDrops(trial.layout));
+      const Trial trial = Follow(branches[b].trial);
       const double score = Score(start, trial);
       if (score < chosen_score) chosen = trial, chosen_score = score;
     }
@@ -50,6 +55,47 @@ class StagedSearch {
 
  private:
   using Stage = Trial (StagedSearch::*)(Trial);
+  using Task = std::function<void(StagedSearch*)>;
+
+  // A copy of `other` that fits with `evaluator` (a speculator of other's).
+  StagedSearch(const StagedSearch& other, Evaluator evaluator)
+      : target_(other.target_),
+        evaluator_(std::move(evaluator)),
+        slab_tried_(other.slab_tried_),
+        mirror_tried_(other.mirror_tried_) {}
+
+  // Speculation for idle threads on whole lines of search, which one thread each keeps busy
+  // better than the few alternatives of a decision do: each task runs on a copy of the search
+  // (the first on the calling thread, reporting progress), and their fits are kept aside; the
+  // caller then runs the same tasks for real, one after another, and takes those fits as if it
+  // made them then (Evaluator::Adopt). So the result, the log and the work count are a serial
+  // search's, for any thread count; only the wall time changes. A line the real run takes
+  // further than its copy did (the budget ends elsewhere) fits the rest itself.
+  void Speculate(const std::vector<Task>& tasks) {
+    const int threads = evaluator_.options().num_threads;
+    const int count = static_cast<int>(tasks.size());
+    if (threads < 2 || count < 2 || !evaluator_.InBudget()) return;
+    const int threads_each = std::max(1, threads / std::min(threads, count));
+    std::vector<Evaluator> speculators = evaluator_.Speculators(count, threads_each);
+    std::vector<StagedSearch> copies;
+    copies.reserve(tasks.size());
+    for (Evaluator& speculator : speculators) copies.push_back(StagedSearch(*this, std::move(speculator)));
+    // Once no line is left to start, a thread whose line ends helps the lines still running.
+    const int workers = std::min(threads, count);
+    std::atomic<int> ended{0};
+    ParallelFor(count, threads, [&](int i) {
+      tasks[i](&copies[i]);
+      if (++ended > count - workers) copies[i].evaluator_.LendThreads();
+    });
+    for (StagedSearch& copy : copies) evaluator_.Adopt(&copy.evaluator_);
+  }
+
+  // A beam branch: the passes from its main form, then the pose's ops that it does not need,
+  // last, once the structure has taken what it explains.
+  Trial Follow(const Trial& main_form) {
+    const Trial trial = Passes(main_form);
+    return ConsiderRounds(&evaluator_, "pose", trial, ProposePoseDrops(trial.layout));
+  }
 
   Trial Smoothing(Trial best) { return ConsiderRounds(&evaluator_, "smooth", best, ProposeSmoothing(best.layout)); }
   Trial Profiles(Trial best) { return ConsiderRounds(&evaluator_, "profile", best, ProposeProfiles(best.layout)); }
@@ -137,6 +183,12 @@ class StagedSearch {
         {"slab", &StagedSearch::Slab},   {"profile", &StagedSearch::Profiles}, {"deform", &StagedSearch::Deforms},
         {"ridge", &StagedSearch::Ridges}, {"hole", &StagedSearch::Holes},       {"detail", &StagedSearch::RepeatDetails},
         {"bevel", &StagedSearch::Bevels},  {"mirror", &StagedSearch::Mirror}};
+    std::vector<Task> tasks;
+    for (const auto& entry : stages) {
+      const Stage stage = entry.second;
+      tasks.push_back([stage, &start](StagedSearch* search) { (search->*stage)(start); });
+    }
+    Speculate(tasks);
     std::vector<Branch> candidates = {{start, "the pose alone", start.loss}};
     for (const auto& [name, stage] : stages) {
       if (!evaluator_.InBudget()) break;

@@ -96,6 +96,9 @@ struct ZeroShotResult {
   Json sequence;         // the recovered sequence document (sequence.json)
   double loss = 0;       // final data loss (unit box, mean squared, both directions)
   int num_fits = 0;      // Ceres (or Adam) fits run
+  // Of them, those fitted ahead on idle threads (prefetched rounds, speculated lines of search)
+  // and taken when the search asked for them; 0 with one thread.
+  int num_fits_ahead = 0;
   int64_t work = 0;      // the work of all fits (the work budget's unit)
   std::vector<FitCost> fit_costs;  // per fit, in the order the search used them
   double seconds = 0;
