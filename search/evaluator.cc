@@ -102,11 +102,9 @@ void Evaluator::Prefetch(const std::vector<Layout>& layouts, FitPrecision precis
   std::vector<const Layout*> jobs;
   std::vector<std::string> keys;
   for (const Layout& layout : layouts) {
+    if (Threads() < 2) break;  // no idle thread to fit on
     std::string key = Key(layout, precision);
-    if (Threads() < 2 || cache_.count(key) || prefetched_.count(key) ||
-        std::count(keys.begin(), keys.end(), key)) {
-      continue;
-    }
+    if (cache_.count(key) || prefetched_.count(key) || std::count(keys.begin(), keys.end(), key)) continue;
     jobs.push_back(&layout);
     keys.push_back(std::move(key));
   }
