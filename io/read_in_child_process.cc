@@ -1,14 +1,19 @@
 #include "io/read_in_child_process.h"
 
 #include <fcntl.h>
+#include <poll.h>
 #include <sys/wait.h>
 #include <unistd.h>
 
+#include <algorithm>
 #include <cerrno>
+#include <chrono>
 #include <csignal>
 #include <cstdint>
+#include <cstdio>
 #include <cstring>
 #include <exception>
+#include <filesystem>
 #include <stdexcept>
 
 namespace opgraph {
@@ -94,14 +99,22 @@ void WriteAll(int fd, const std::string& bytes) {
   }
 }
 
-std::string ReadAll(int fd) {
-  std::string bytes;
+// Reads until the writer closes its end; false if `deadline` passes first.
+bool ReadAllBefore(int fd, std::chrono::steady_clock::time_point deadline, std::string* bytes) {
   char buffer[1 << 16];
   while (true) {
+    using std::chrono::milliseconds;
+    const auto left = std::chrono::duration_cast<milliseconds>(deadline - std::chrono::steady_clock::now());
+    if (left.count() <= 0) return false;
+    pollfd poll_fd{fd, POLLIN, 0};
+    const int ready = poll(&poll_fd, 1, static_cast<int>(std::min<int64_t>(left.count(), 1 << 30)));
+    if (ready < 0 && errno == EINTR) continue;
+    if (ready == 0) continue;  // the deadline is checked at the top
+    if (ready < 0) return true;
     const ssize_t n = read(fd, buffer, sizeof(buffer));
     if (n < 0 && errno == EINTR) continue;
-    if (n <= 0) return bytes;
-    bytes.append(buffer, static_cast<size_t>(n));
+    if (n <= 0) return true;
+    bytes->append(buffer, static_cast<size_t>(n));
   }
 }
 
@@ -125,7 +138,18 @@ std::string ReadAll(int fd) {
 
 }  // namespace
 
-InputGeometry ReadInChildProcess(const std::string& path, const std::function<InputGeometry()>& read) {
+double ReaderTimeLimitSeconds(const std::string& path) {
+  std::error_code error;
+  const uintmax_t bytes = std::filesystem::file_size(path, error);
+  return 10.0 + (error ? 0.0 : 5.0 * static_cast<double>(bytes) / (1 << 20));
+}
+
+InputGeometry ReadInChildProcess(const std::string& path, const std::function<InputGeometry()>& read,
+                                 double time_limit_seconds) {
+  if (time_limit_seconds <= 0) time_limit_seconds = ReaderTimeLimitSeconds(path);
+  const auto deadline = std::chrono::steady_clock::now() +
+                        std::chrono::duration_cast<std::chrono::steady_clock::duration>(
+                            std::chrono::duration<double>(std::min(time_limit_seconds, 1e7)));
   int fds[2];
   if (pipe2(fds, O_CLOEXEC) != 0) throw std::runtime_error(path + ": cannot read it: pipe: " + std::strerror(errno));
   const pid_t child = fork();
@@ -138,10 +162,18 @@ InputGeometry ReadInChildProcess(const std::string& path, const std::function<In
     RunChild(fds[1], read);
   }
   close(fds[1]);
-  const std::string answer = ReadAll(fds[0]);
+  std::string answer;
+  const bool finished = ReadAllBefore(fds[0], deadline, &answer);
   close(fds[0]);
+  if (!finished) kill(child, SIGKILL);
   int status = 0;
   while (waitpid(child, &status, 0) < 0 && errno == EINTR) {
+  }
+  if (!finished) {
+    char limit[32];
+    std::snprintf(limit, sizeof(limit), "%.0f", time_limit_seconds);
+    throw std::runtime_error(path + ": cannot read it: the reader did not finish within " + limit +
+                             " s (a malformed file can make it loop)");
   }
   if (WIFSIGNALED(status) || answer.empty()) {
     const std::string how = WIFSIGNALED(status) ? strsignal(WTERMSIG(status)) : "no answer";

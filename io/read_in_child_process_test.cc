@@ -3,7 +3,9 @@
 #include "io/read_in_child_process.h"
 
 #include <gtest/gtest.h>
+#include <unistd.h>
 
+#include <chrono>
 #include <csignal>
 #include <cstdlib>
 #include <filesystem>
@@ -44,6 +46,34 @@ TEST(ReadInChildProcess, ACrashInTheReaderIsAnErrorHere) {
       EXPECT_NE(std::string(error.what()).find("in.off: cannot read it: the reader crashed on it ("), std::string::npos)
           << error.what();
     }
+  }
+}
+
+TEST(ReadInChildProcess, AReaderThatNeverFinishesIsStoppedAtTheTimeLimit) {
+  const auto start = std::chrono::steady_clock::now();
+  try {
+    ReadInChildProcess(
+        "in.ply",
+        []() -> InputGeometry {
+          while (true) pause();  // as a parser looping on a malformed file
+        },
+        /*time_limit_seconds=*/1);
+    FAIL() << "no error";
+  } catch (const std::runtime_error& error) {
+    EXPECT_EQ(std::string(error.what()),
+              "in.ply: cannot read it: the reader did not finish within 1 s (a malformed file can make it loop)");
+  }
+  const double seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+  EXPECT_GE(seconds, 1.0);
+  EXPECT_LT(seconds, 30.0);  // killed, not waited for
+}
+
+TEST(ReadInChildProcess, TheDefaultTimeLimitGrowsWithTheFile) {
+  const std::filesystem::path dir = std::filesystem::path(OPGRAPH_SOURCE_DIR) / "tests" / "data" / "malformed";
+  EXPECT_EQ(ReaderTimeLimitSeconds("/no/such/file.ply"), 10.0);
+  for (const auto& entry : std::filesystem::directory_iterator(dir)) {
+    const double megabytes = static_cast<double>(std::filesystem::file_size(entry.path())) / (1 << 20);
+    EXPECT_DOUBLE_EQ(ReaderTimeLimitSeconds(entry.path().string()), 10.0 + 5.0 * megabytes);
   }
 }
 
