@@ -11,7 +11,7 @@ $SUDO apt-get install -y -qq \
   libosd-dev libopenmesh-dev libcgal-dev libgmp-dev libmpfr-dev libboost-dev \
   nlohmann-json3-dev libnanoflann-dev \
   libgtest-dev libgmock-dev libbenchmark-dev \
-  blender python3 python3-numpy chromium \
+  blender python3 python3-numpy python3-matplotlib chromium \
   pybind11-dev python3-pybind11 python3-dev \
   clang libclang-rt-14-dev >/dev/null  # clang and libFuzzer: the fuzz harnesses (scripts/fuzz.sh)
 # Input formats: Assimp for meshes, PCL for point clouds (their recommends pull VTK and Qt, unused).
