@@ -30,7 +30,7 @@ for threads in $thread_counts; do
       read -r set limit <<<"$set_limit"
       echo "== threads $threads, jobs $jobs, cap $budget s: $set" >&2
       build/run_results --set "$set" --limit "$limit" --threads "$threads" --jobs "$jobs" \
-        --time_budget "$budget" --work_budget 1000000000000 \
+        --time_budget "$budget" --work_budget 1000000000 \
         --out "$run" --records "$run/records" --doc "$run/results.md" >"$run.$set.log" 2>&1 ||
         { tail -5 "$run.$set.log"; exit 1; }
     done
