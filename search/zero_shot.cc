@@ -175,15 +175,14 @@ class StagedSearch {
 
   // The first decision shapes the rest of a staged search (a profile accepted for a small gain
   // blocks the extrusion that explains a boss; a small bend blocks a profile), so it is made
-  // best-first: every stage runs from the pose (a rounded box is a Bevel of it, a CSG part a
-  // Boolean of it: later, extrusions would already have taken its residual), each result
+  // best-first: every stage runs from the pose (a rounded box is a Bevel of it), each result
   // scored by its loss after the price of its ops. Returns the best `beam_width` of them,
   // best first (the pose itself among them when it scores so).
   std::vector<Branch> ChooseMainForms(const Trial& start) {
     const std::pair<const char*, Stage> stages[] = {
         {"slab", &StagedSearch::Slab},   {"profile", &StagedSearch::Profiles}, {"deform", &StagedSearch::Deforms},
         {"ridge", &StagedSearch::Ridges}, {"hole", &StagedSearch::Holes},       {"detail", &StagedSearch::RepeatDetails},
-        {"bevel", &StagedSearch::Bevels},  {"mirror", &StagedSearch::Mirror},     {"boolean", &StagedSearch::Booleans}};
+        {"bevel", &StagedSearch::Bevels},  {"mirror", &StagedSearch::Mirror}};
     std::vector<Task> tasks;
     for (const auto& entry : stages) {
       const Stage stage = entry.second;
