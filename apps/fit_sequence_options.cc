@@ -67,6 +67,9 @@ DEFINE_int32(time_budget, 0,
              "which of the two ended the search");
 DEFINE_int32(beam_width, opgraph::ZeroShotOptions().beam_width,
              "main forms (the first decision) the search continues from, the best result kept; 1 is greedy; in [1, 16]");
+DEFINE_double(op_price, opgraph::ZeroShotOptions().min_relative_gain,
+              "the fraction of the loss each op the search adds must remove, in [0, 0.9]: higher gives shorter "
+              "sequences, lower closer fits");
 DEFINE_int32(max_ops, opgraph::ZeroShotOptions().max_ops, "the most operations the recovered sequence has, in [3, 1000]");
 DEFINE_int64(max_faces, opgraph::ZeroShotOptions().max_faces, opgraph::MaxFacesHelp());
 DEFINE_uint64(seed, opgraph::FitterOptions().seed, "the seed of the samples and of the search's random choices, in [0, 2^53]");
@@ -106,6 +109,9 @@ std::string FitSequenceOptions::Check() const {
   if (seconds != 0 && (seconds < 1 || seconds > 86400)) return "--time-budget: expected seconds in [1, 86400] (or 0: none)";
   if (zero_shot.max_ops < 3 || zero_shot.max_ops > 1000) return "--max-ops: expected an integer in [3, 1000]";
   if (zero_shot.beam_width < 1 || zero_shot.beam_width > 16) return "--beam-width: expected an integer in [1, 16]";
+  if (!(zero_shot.min_relative_gain >= 0 && zero_shot.min_relative_gain <= 0.9)) {
+    return "--op-price: expected a fraction in [0, 0.9]";
+  }
   if (const std::string problem = CheckMaxFaces(zero_shot.max_faces); !problem.empty()) return problem;
   return "";
 }
@@ -140,6 +146,7 @@ FitSequenceOptions FitSequenceOptionsFromCommandLine(int argc, char** argv) {
   options.zero_shot.time_budget_seconds = FLAGS_time_budget;
   options.zero_shot.max_ops = FLAGS_max_ops;
   options.zero_shot.beam_width = FLAGS_beam_width;
+  options.zero_shot.min_relative_gain = FLAGS_op_price;
   options.zero_shot.max_faces = FLAGS_max_faces;
   options.zero_shot.freeform = FLAGS_freeform;
   options.quiet = FLAGS_quiet;

@@ -28,6 +28,8 @@ class ExtrudeOp : public OpBase<ExtrudeOp> {
   void Prepare(const Mesh& input) override;
   Json ParamsToJson() const override;
   std::string BlenderCode() const override;
+  // A tilted cap's rotation axes come from a frame that switches where |normal.x| is 0.9.
+  bool NearGeometricBranch(double gate, const Positions<double>& in) const override;
 
   template <typename T>
   void Apply(const T* p, const T& gate, const Positions<T>& in, Positions<T>* out) const;

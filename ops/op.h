@@ -87,6 +87,11 @@ class Op {
   // For a modifier: moving a global transform from before the op to after it builds the same
   // mesh (`rigid`: the transform is a rotation or translation).
   virtual bool CommutesWithTransform(bool /*rigid*/) const { return false; }
+  // True when the input positions `in` (of the topology given to Prepare) sit within float32
+  // noise of a switch in a branch the geometry pass takes on them at these parameters and
+  // `gate`: real Blender, on float32 coordinates, may take the other side (a replay guard,
+  // ops/replay_guards.h).
+  virtual bool NearGeometricBranch(double /*gate*/, const Positions<double>& /*in*/) const { return false; }
 
  protected:
   void AddParam(const std::string& name, double lower, double upper, double identity,

@@ -18,10 +18,12 @@ bool HasCollapsedEdge(const std::vector<Mesh>& steps, double fraction) {
   return false;
 }
 
-bool SubdividesTwoEdgeVertex(const Json& document, const std::vector<Mesh>& steps) {
-  const Json& ops = document.at("operations");
-  for (size_t k = 1; k < ops.size() && k < steps.size(); ++k) {
-    if (ops[k].at("op") != "Subdivision") continue;
+namespace {
+
+// `names`: the op names of the sequence `steps` came from.
+bool SubdividesTwoEdgeVertexIn(const std::vector<std::string>& names, const std::vector<Mesh>& steps) {
+  for (size_t k = 1; k < names.size() && k < steps.size(); ++k) {
+    if (names[k] != "Subdivision") continue;
     const Mesh& input = steps[k - 1];
     std::vector<std::set<int>> neighbours(input.vertices.size());
     for (const Polygon& face : input.faces) {
@@ -37,8 +39,26 @@ bool SubdividesTwoEdgeVertex(const Json& document, const std::vector<Mesh>& step
   return false;
 }
 
-bool BreaksReplay(const Json& document, const std::vector<Mesh>& steps) {
-  return HasCollapsedEdge(steps) || SubdividesTwoEdgeVertex(document, steps);
+}  // namespace
+
+bool SubdividesTwoEdgeVertex(const Json& document, const std::vector<Mesh>& steps) {
+  std::vector<std::string> names;
+  for (const Json& op : document.at("operations")) names.push_back(op.at("op"));
+  return SubdividesTwoEdgeVertexIn(names, steps);
+}
+
+bool NearGeometricBranch(const Sequence& evaluated, const std::vector<Mesh>& steps) {
+  for (size_t k = 0; k < evaluated.ops.size() && k < steps.size(); ++k) {
+    const Positions<double>& input = k == 0 ? evaluated.StartMesh().vertices : steps[k - 1].vertices;
+    if (evaluated.ops[k]->NearGeometricBranch(evaluated.gates[k], input)) return true;
+  }
+  return false;
+}
+
+bool BreaksReplay(const Sequence& evaluated, const std::vector<Mesh>& steps) {
+  std::vector<std::string> names;
+  for (const auto& op : evaluated.ops) names.push_back(op->Name());
+  return HasCollapsedEdge(steps) || SubdividesTwoEdgeVertexIn(names, steps) || NearGeometricBranch(evaluated, steps);
 }
 
 }  // namespace opgraph

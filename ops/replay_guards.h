@@ -6,6 +6,7 @@
 
 #include "core/mesh.h"
 #include "ops/params.h"
+#include "ops/sequence.h"
 
 namespace opgraph {
 
@@ -19,7 +20,11 @@ bool HasCollapsedEdge(const std::vector<Mesh>& steps, double fraction = 1e-5);
 // (docs/sequence-format.md). `steps[k]` is the mesh after operation k of `document`.
 bool SubdividesTwoEdgeVertex(const Json& document, const std::vector<Mesh>& steps);
 
-// Either of the two above (at the default fraction).
-bool BreaksReplay(const Json& document, const std::vector<Mesh>& steps);
+// True when an op of `evaluated` (after EvaluateSequence, whose result is `steps`) takes a
+// branch on its input's geometry within float32 noise of the switch (Op::NearGeometricBranch).
+bool NearGeometricBranch(const Sequence& evaluated, const std::vector<Mesh>& steps);
+
+// Any of the three above (at the default fraction), for `evaluated` after EvaluateSequence.
+bool BreaksReplay(const Sequence& evaluated, const std::vector<Mesh>& steps);
 
 }  // namespace opgraph

@@ -77,7 +77,7 @@ Evaluator::Outcome Evaluator::FitUncached(const Layout& layout, FitPrecision pre
     Sequence replay = Parse(outcome.trial.layout.Document());
     outcome.trial.loss = summary.final_loss;
     const std::vector<Mesh> steps = EvaluateSequence(&replay);
-    outcome.trial.ok = std::isfinite(outcome.trial.loss) && !BreaksReplay(document, steps);
+    outcome.trial.ok = std::isfinite(outcome.trial.loss) && !BreaksReplay(replay, steps);
   } catch (const std::runtime_error& error) {
     // The engine's errors: a proposal whose targets vanish or whose fit fails is rejected.
     outcome.error = error.what();

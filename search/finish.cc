@@ -101,7 +101,8 @@ Json PruneOrPolish(Evaluator* evaluator, const Trial& best, double* loss) {
     if (summary.cut_by_time) evaluator->NoteCutByTime("gate fit", "prune: the gate fit was cut by the time budget");
     Json fitted = SequenceToJson(sequence);
     Sequence replay = evaluator->Parse(fitted);
-    const bool breaks_replay = BreaksReplay(fitted, EvaluateSequence(&replay));
+    const std::vector<Mesh> steps = EvaluateSequence(&replay);
+    const bool breaks_replay = BreaksReplay(replay, steps);
     // Pruning must not undo what the search paid for.
     if (!breaks_replay && summary.final_loss <= best.loss * (1 + evaluator->options().min_relative_gain)) {
       document = fitted;

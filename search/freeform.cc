@@ -112,7 +112,8 @@ std::optional<Candidate> FitCandidate(const Evaluator& evaluator, const Json& do
   Json& operations = candidate.document["operations"];
   operations.insert(operations.begin() + first_op, build::VertexDisplace(groups));
   Sequence replay = evaluator.Parse(candidate.document);
-  if (BreaksReplay(candidate.document, EvaluateSequence(&replay))) return std::nullopt;
+  const std::vector<Mesh> replay_steps = EvaluateSequence(&replay);
+  if (BreaksReplay(replay, replay_steps)) return std::nullopt;
   candidate.chamfer = Chamfer(evaluator, candidate.document);
   candidate.loss = fit.final_loss;
   candidate.displaced = static_cast<int>(groups.size());

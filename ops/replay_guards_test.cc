@@ -1,0 +1,65 @@
+#include "ops/replay_guards.h"
+
+#include <gtest/gtest.h>
+
+#include <cmath>
+
+#include "core/surface_distance.h"
+#include "ops/builders.h"
+
+namespace opgraph {
+namespace {
+
+// A box turned about Z so that its +X face's normal has x = `normal_x`, that face extruded with
+// a cap tilted by `tilt_deg` about the tilt frame's two axes (which switch at |normal.x| = 0.9).
+Json TiltedExtrudeOnATurnedBox(double normal_x, double tilt_deg) {
+  const double turn = std::acos(normal_x);
+  build::ExtrudeArgs extrude;
+  extrude.faces.normals = {Vec3d(std::cos(turn), std::sin(turn), 0)};
+  extrude.faces.min_dot = 0.999;
+  extrude.faces.expect = 1;
+  extrude.height = 0.5;
+  extrude.width = 0.7;
+  extrude.tilt_deg[0] = tilt_deg, extrude.tilt_deg[1] = -0.4 * tilt_deg;
+  return build::Document({build::GlobalScale(Vec3d(1.2, 0.8, 0.6)), build::GlobalRotate(Vec3d(0, 0, RadToDeg(turn))),
+                          build::Extrude(extrude)});
+}
+
+struct Evaluated {
+  Sequence sequence;
+  std::vector<Mesh> steps;
+};
+
+Evaluated Evaluate(const Json& document) {
+  Evaluated evaluated{ParseSequence(document), {}};
+  evaluated.steps = EvaluateSequence(&evaluated.sequence);
+  return evaluated;
+}
+
+TEST(ReplayGuards, ATiltedCapOnTheTiltFrameSwitchBreaksReplay) {
+  // Either side of the switch, 1e-7 apart, the cap turns about other axes: Blender's float32
+  // normal can fall on the other side, so the guard refuses a cap this close.
+  const Evaluated below = Evaluate(TiltedExtrudeOnATurnedBox(0.9 - 1e-7, 30));
+  const Evaluated above = Evaluate(TiltedExtrudeOnATurnedBox(0.9 + 1e-7, 30));
+  EXPECT_GT(SymmetricSurfaceDistanceRelative(below.steps.back(), above.steps.back()), 1e-2);
+  EXPECT_TRUE(NearGeometricBranch(below.sequence, below.steps));
+  EXPECT_TRUE(NearGeometricBranch(above.sequence, above.steps));
+  EXPECT_TRUE(BreaksReplay(below.sequence, below.steps));
+  // Untilted, the frame does not matter.
+  const Evaluated flat = Evaluate(TiltedExtrudeOnATurnedBox(0.9, 0));
+  EXPECT_FALSE(NearGeometricBranch(flat.sequence, flat.steps));
+  EXPECT_FALSE(BreaksReplay(flat.sequence, flat.steps));
+}
+
+TEST(ReplayGuards, ATiltedCapClearOfTheSwitchReplays) {
+  // The parity sequences extrude_tilt_frame_{below,above}_switch: real Blender rebuilds these
+  // (ParityCase.BlenderRebuildMatches), one on each side of the switch.
+  for (const double normal_x : {0.898, 0.902, 0.5, 1.0}) {
+    const Evaluated clear = Evaluate(TiltedExtrudeOnATurnedBox(normal_x, 30));
+    EXPECT_FALSE(NearGeometricBranch(clear.sequence, clear.steps)) << normal_x;
+    EXPECT_FALSE(BreaksReplay(clear.sequence, clear.steps)) << normal_x;
+  }
+}
+
+}  // namespace
+}  // namespace opgraph
