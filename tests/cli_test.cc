@@ -71,7 +71,7 @@ TEST(FitSequenceCommandLine, HelpListsEveryFlagWithItsDefaultAndDoesNoWork) {
   EXPECT_EQ(help.exit_code, 0);
   EXPECT_FALSE(fs::exists(dir / "out"));
   for (const char* flag : {"--input", "--out", "--init", "--work-budget", "--time-budget", "--max-ops", "--max-faces", "--seed",
-                           "--threads", "--beam-width", "--optimizer", "--loss", "--fit-gates", "--samples", "--freeform",
+                           "--threads", "--beam-width", "--op-price", "--optimizer", "--loss", "--fit-gates", "--samples", "--freeform",
                            "--blender-axes", "--quiet"}) {
     EXPECT_NE(DefaultIn(help.out, flag), "(not listed)") << flag;
   }
@@ -132,6 +132,7 @@ TEST(FitSequenceCommandLine, BadCommandLineNamesTheArgument) {
       {" --quiet=maybe", "fit_sequence: --quiet: expected true or false, not 'maybe'"},
       {" --seed=-1", "fit_sequence: --seed: expected an integer >= 0, not '-1'"},
       {" --beam-width 0", "fit_sequence: --beam-width: expected an integer in [1, 16]"},
+      {" --op-price 0.95", "fit_sequence: --op-price: expected a fraction in [0, 0.9]"},
       {" --flagfile " + ShellQuote((dir / "bad_flags.txt").string()), "unknown flag '--bogus'"},
       {" --flagfile " + ShellQuote((dir / "missing.txt").string()), "fit_sequence: --flagfile: cannot open"},
   };
