@@ -84,7 +84,7 @@ ResultsRow RunModel(const ResultsModel& model, const RunOptions& options) {
   if (options.work_budget > 0) budget += " --work-budget " + std::to_string(options.work_budget);
   if (options.time_budget > 0) budget += " --time-budget " + std::to_string(options.time_budget);
   if (options.threads > 0) budget += " --threads " + std::to_string(options.threads);
-  if (options.op_price > 0) budget += " --op-price " + std::to_string(options.op_price);
+  if (!options.fit_flags.empty()) budget += " " + options.fit_flags;
   const std::string command = ShellQuote(options.fit_sequence.string()) + " --input " + ShellQuote(input.string()) +
                               " --out " + ShellQuote(dir.string()) + budget + " --quiet > " + ShellQuote(log.string()) +
                               " 2>&1";

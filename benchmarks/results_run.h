@@ -37,7 +37,7 @@ struct RunOptions {
   int64_t work_budget = 0;  // fit_sequence --work-budget (0: its default)
   int time_budget = 0;      // fit_sequence --time-budget, a cap in seconds (0: none)
   int threads = 0;          // fit_sequence --threads (0: its default, every hardware thread)
-  double op_price = 0;      // fit_sequence --op-price (0: its default)
+  std::string fit_flags;    // more fit_sequence flags, as given (a shell word list)
   // > 0: the model is given to fit_sequence as a cloud of this many surface samples (no
   // normals, an XYZ file beside its outputs), and the numbers compare the result with the model
   // mesh itself.

@@ -26,7 +26,7 @@ DEFINE_string(records, "docs/results", "the folder of per-set records (SET.json)
 DEFINE_int64(work_budget, 0, "fit_sequence --work-budget per model (0: its default)");
 DEFINE_int32(time_budget, 0, "fit_sequence --time-budget per model, a cap in seconds (0: none)");
 DEFINE_int32(threads, 0, "fit_sequence --threads per model (0: its default, every hardware thread)");
-DEFINE_double(op_price, 0, "fit_sequence --op-price per model (0: its default)");
+DEFINE_string(fit_flags, "", "more fit_sequence flags for every model, as given (e.g. '--op-price 0.15')");
 DEFINE_int32(jobs, 0, "models run at once (0: one per hardware thread)");
 DEFINE_int32(limit, 0,
              "only the first N models of each set (0: all), for quick tuning runs; their records and page go to "
@@ -67,9 +67,8 @@ int main(int argc, char** argv) {
   ParseCommandLineOrExit(argc, argv,
                          {"run_results", "usage: run_results [--set NAME] [--work_budget N] [--time_budget S] [--jobs N]",
                           __FILE__, /*max_arguments=*/0});
-  if (FLAGS_work_budget < 0 || FLAGS_time_budget < 0 || FLAGS_threads < 0 || FLAGS_jobs < 0 || FLAGS_limit < 0 ||
-      FLAGS_op_price < 0) {
-    std::cerr << "run_results: --work_budget, --time_budget, --threads, --jobs, --limit and --op_price must be >= 0\n";
+  if (FLAGS_work_budget < 0 || FLAGS_time_budget < 0 || FLAGS_threads < 0 || FLAGS_jobs < 0 || FLAGS_limit < 0) {
+    std::cerr << "run_results: --work_budget, --time_budget, --threads, --jobs and --limit must be >= 0\n";
     return 2;
   }
   auto is_default = [](const char* flag) { return gflags::GetCommandLineFlagInfoOrDie(flag).is_default; };
@@ -109,7 +108,7 @@ int main(int argc, char** argv) {
   options.work_budget = FLAGS_work_budget;
   options.time_budget = FLAGS_time_budget;
   options.threads = FLAGS_threads;
-  options.op_price = FLAGS_op_price;
+  options.fit_flags = FLAGS_fit_flags;
   options.cloud_points = FLAGS_cloud;
   const int jobs = FLAGS_jobs > 0 ? FLAGS_jobs : std::max(1u, std::thread::hardware_concurrency());
   for (const std::string& set : ResultsSetNames()) fs::create_directories(options.out / set);
