@@ -66,9 +66,8 @@ struct ZeroShotOptions {
   int max_ops = 24;
   // The most faces a step may have (Sequence::max_faces): a layout beyond it is not fitted.
   int64_t max_faces = kDefaultMaxFaces;
-  // A proposal must lower the loss by this fraction per op it adds (fit_sequence --op-price).
-  // 0.2 on the first 40 synth-tune models: mean LCS 0.41 -> 0.49 and median Chamfer 0.0033 ->
-  // 0.0027 against 0.08 (0.15: 0.45 / 0.0024; 0.25: 0.47 / 0.0027; 0.35: 0.45 / 0.0032).
+  // A proposal must lower the loss by this fraction per op it adds (fit_sequence --op-price;
+  // chosen on the tuning splits among 0.08 to 0.35: docs/zero-shot.md, "The op price").
   double min_relative_gain = 0.2;
   // Main forms (the first decision) the passes run from; the best result wins (1: greedy).
   int beam_width = 3;
