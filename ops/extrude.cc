@@ -42,8 +42,8 @@ int ExtrudeOp::first_created_face() const {
 
 namespace {
 
-// The tilt frame's helper axis is X, or Y where the normal is within acos(0.9) of X (the same
-// rule in BlenderCode's Python).
+// The tilt frame's helper axis is X, or Y where the normal is within acos(0.9) of X (BlenderCode
+// writes the same rule in Python).
 constexpr double kTiltFrameSwitch = 0.9;
 
 template <typename T>
@@ -125,7 +125,9 @@ std::string ExtrudeOp::BlenderCode() const {
       "    for v in verts:\n"
       "        v.co += n * height\n"
       "    c = sum((v.co for v in verts), Vector()) / len(verts)\n"
-      "    e = Vector((1, 0, 0)) if abs(n.x) < 0.9 else Vector((0, 1, 0))\n"
+      "    e = Vector((1, 0, 0)) if abs(n.x) < " +
+      Py(kTiltFrameSwitch) +
+      " else Vector((0, 1, 0))\n"
       "    u = n.cross(e).normalized()\n"
       "    r = Matrix.Rotation(tilt[0], 3, u) @ Matrix.Rotation(tilt[1], 3, n.cross(u))\n"
       "    for v in verts:\n"
