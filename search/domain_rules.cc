@@ -41,6 +41,14 @@ FitterOptions WithDomainRules(FitterOptions options, const Json& document, const
         options.domain_rules.push_back({k, ParamIndex(ops[k], axis), 1e-3 * half_extent.maxCoeff(), kInf, 1.0});
       }
     }
+    // A cutter grown far beyond the shape changes nothing the fit sees (past the shape its length
+    // is free), but Blender keeps its corners in float32, and the rounding at 500 times the
+    // shape's size moved the cut 4e-6 of the diagonal (a mug's bore, from a point cloud).
+    if (ops[k].at("op") == "Boolean") {
+      for (const char* axis : {"size_x", "size_y", "size_z"}) {
+        options.domain_rules.push_back({k, ParamIndex(ops[k], axis), 0.0, kMaxBooleanSize * half_extent.maxCoeff(), 1.0});
+      }
+    }
     if (ops[k].at("op") == "Inset") {
       options.domain_rules.push_back({k, ParamIndex(ops[k], "thickness"), 0.01 * min_half_extent, kInf, 1.0});
     }

@@ -13,7 +13,9 @@ namespace opgraph {
 // at least 1% of the posed cube's smallest half extent (a zero rim is a degenerate ring); and
 // when the posed box is a sheet (under 1% as thick as it is long), the cube's global scale keeps
 // every side at least 1e-3 of its largest `half_extent` (a flat target would squash it until its
-// edges collapse).
+// edges collapse); and a Boolean's primitive spans at most kMaxBooleanSize times the largest
+// half extent along each of its axes (so its float32 corners in Blender stay precise).
+constexpr double kMaxBooleanSize = 8.0;
 FitterOptions WithDomainRules(FitterOptions options, const Json& document, const Vec3d& half_extent);
 
 }  // namespace opgraph
