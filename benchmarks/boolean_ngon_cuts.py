@@ -4,37 +4,33 @@ four corners left by the op before it (docs/zero-shot.md, Known limits).
 
     python3 benchmarks/boolean_ngon_cuts.py [--synth out/synth] [--split tune]
 
-Each sequence with a Boolean is rebuilt step by step with build/apply_sequence (into
-out/boolean_ngon_cuts/); a polygon of the step before a Boolean counts as cut when no polygon
-of the Boolean's output has the same corners.
+Each sequence with a Boolean is rebuilt up to each Boolean and the op before it with the
+Python binding (build/python); a polygon of the step before a Boolean counts as cut when no
+polygon of the Boolean's output has the same corners.
 """
 import argparse
 import collections
 import json
 import os
-import subprocess
+import sys
+
+sys.path.insert(0, os.path.join(os.path.dirname(os.path.abspath(__file__)), '..', 'build', 'python'))
+import opgraph  # noqa: E402
 
 
-def load_obj(path):
-    vertices, faces = [], []
-    for line in open(path):
-        fields = line.split()
-        if fields and fields[0] == 'v':
-            vertices.append(tuple(round(float(x), 6) for x in fields[1:4]))
-        elif fields and fields[0] == 'f':
-            faces.append([int(x.split('/')[0]) - 1 for x in fields[1:]])
-    return vertices, faces
+def polygons(document, num_ops):
+    """The polygons of the mesh after the first `num_ops` ops, each as its set of corners."""
+    mesh = opgraph.apply(dict(document, operations=document['operations'][:num_ops]))
+    corners = [tuple(round(float(x), 6) for x in v) for v in mesh['vertices']]
+    return [frozenset(corners[i] for i in face) for face in mesh['faces']]
 
 
-def cuts_ngon(steps_dir):
-    steps = sorted(os.listdir(steps_dir))
-    for k in range(1, len(steps)):
-        if 'Boolean' not in steps[k]:
+def cuts_ngon(document):
+    for k, op in enumerate(document['operations']):
+        if op['op'] != 'Boolean':
             continue
-        before_v, before_f = load_obj(os.path.join(steps_dir, steps[k - 1]))
-        after_v, after_f = load_obj(os.path.join(steps_dir, steps[k]))
-        kept = {frozenset(after_v[i] for i in f) for f in after_f}
-        if any(len(f) > 4 and frozenset(before_v[i] for i in f) not in kept for f in before_f):
+        kept = set(polygons(document, k + 1))
+        if any(len(face) > 4 and face not in kept for face in polygons(document, k)):
             return True
     return False
 
@@ -43,18 +39,13 @@ def main():
     parser = argparse.ArgumentParser()
     parser.add_argument('--synth', default='out/synth')
     parser.add_argument('--split', default='tune')
-    parser.add_argument('--work', default='out/boolean_ngon_cuts')
     args = parser.parse_args()
     models = json.load(open(os.path.join(args.synth, 'index.json')))['models']
     counts = collections.Counter()
     for model in models:
         if model['split'] != args.split or 'Boolean' not in model['ops']:
             continue
-        out = os.path.join(args.work, model['name'])
-        if not os.path.isdir(os.path.join(out, 'steps')):
-            subprocess.run(['build/apply_sequence', os.path.join(args.synth, model['name'], 'sequence.json'), '--out', out],
-                           check=True, capture_output=True)
-        cut = cuts_ngon(os.path.join(out, 'steps'))
+        cut = cuts_ngon(json.load(open(os.path.join(args.synth, model['name'], 'sequence.json'))))
         replays = model['blender_counts_equal'] and 0 <= model['blender_distance'] <= 1e-6
         counts[(cut, replays)] += 1
         if cut:
