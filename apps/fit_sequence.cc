@@ -111,7 +111,7 @@ int Run(int argc, char** argv) {
 
   MetricsOptions metrics_options;
   metrics_options.seed = options.seed;
-  const ShapeMetrics shape = ComputeShapeMetrics(outputs.result, target->shape(), metrics_options);
+  const ShapeMetrics shape = ComputeTargetMetrics(outputs.result, *target, metrics_options);
   const WiringMetrics wiring = ComputeWiringMetrics(outputs.result);
   Json metrics = {
       {"target", Printable(input_path, 4096)},  // JSON needs UTF-8: odd bytes show as ?

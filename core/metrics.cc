@@ -8,6 +8,7 @@
 
 #include <Eigen/Geometry>
 
+#include "core/cloud_surface.h"
 #include "core/geometry.h"
 #include "core/nearest.h"
 
@@ -33,21 +34,25 @@ Positions<double> Normalised(const Positions<double>& points, const Vec3d& centr
   return out;
 }
 
-// Distances from `samples` to a shape: its surface when it has triangles, else its points.
+// Distances from `samples` to a shape: its surface when it has triangles, else the surface its
+// points sample when `normals` are given, else its points.
 struct DistanceStats {
   double mean = 0, mean_squared = 0, normal_dot = 0;
   int within_001 = 0, within_002 = 0;
 };
 
 DistanceStats DistancesToShape(const SurfaceSamples& samples, const Positions<double>& positions,
-                               const std::vector<MeshTriangle>& triangles) {
+                               const std::vector<MeshTriangle>& triangles, const Positions<double>* normals) {
   DistanceStats stats;
   const int n = static_cast<int>(samples.points.size());
   if (n == 0) return stats;
   std::unique_ptr<TriangleTree> surface;
   std::unique_ptr<PointTree> points;
+  std::unique_ptr<CloudSurface> cloud;
   if (!triangles.empty()) {
     surface.reset(new TriangleTree(positions, triangles));
+  } else if (normals) {
+    cloud.reset(new CloudSurface(positions, *normals));
   } else {
     points.reset(new PointTree(positions));
   }
@@ -57,6 +62,9 @@ DistanceStats DistancesToShape(const SurfaceSamples& samples, const Positions<do
       const ClosestPoint c = surface->Closest(samples.points[i]);
       squared = c.squared_distance;
       if (!samples.normals.empty()) stats.normal_dot += std::abs(samples.normals[i].dot(surface->Normal(c.triangle)));
+    } else if (cloud) {
+      const double d = cloud->Distance(samples.points[i]);
+      squared = d * d;
     } else {
       points->Nearest(samples.points[i], &squared);
     }
@@ -99,6 +107,11 @@ double F1(double precision, double recall) {
 }  // namespace
 
 ShapeMetrics ComputeShapeMetrics(const Mesh& output, const Mesh& target, const MetricsOptions& options) {
+  return ComputeShapeMetrics(output, target, Positions<double>(), options);
+}
+
+ShapeMetrics ComputeShapeMetrics(const Mesh& output, const Mesh& target, const Positions<double>& target_normals,
+                                 const MetricsOptions& options) {
   const std::string problem = options.Check();
   if (!problem.empty()) throw std::invalid_argument("metrics options: " + problem);
   Vec3d centre;
@@ -117,8 +130,13 @@ ShapeMetrics ComputeShapeMetrics(const Mesh& output, const Mesh& target, const M
     target_samples.points = target_positions;
   }
 
-  const DistanceStats forward = DistancesToShape(output_samples, target_positions, target_triangles);
-  const DistanceStats backward = DistancesToShape(target_samples, output_positions, output_triangles);
+  const bool cloud_surface = target_triangles.empty() && !target_normals.empty();
+  if (cloud_surface && target_normals.size() != target.vertices.size()) {
+    throw std::invalid_argument("metrics: a cloud's normals must be one per point");
+  }
+  const DistanceStats forward = DistancesToShape(output_samples, target_positions, target_triangles,
+                                                 cloud_surface ? &target_normals : nullptr);
+  const DistanceStats backward = DistancesToShape(target_samples, output_positions, output_triangles, nullptr);
   ShapeMetrics metrics;
   metrics.chamfer = {forward.mean, backward.mean};
   metrics.chamfer_squared = {forward.mean_squared, backward.mean_squared};

@@ -9,7 +9,8 @@
 // F1 at tau: precision = fraction of output samples within tau of the target surface, recall =
 // fraction of target samples within tau of the output surface, F1 = 2PR / (P + R).
 // A target without faces (a point cloud) is its own sample set; distances to it are to its
-// nearest point, and its normal consistency is NaN (no normals).
+// nearest point (or, given its normals, to the surface it samples: core/cloud_surface.h), and
+// its normal consistency is NaN.
 #pragma once
 
 #include <cstdint>
@@ -50,6 +51,10 @@ struct MetricsOptions {
 // `output` must have faces; `target` may be a point cloud (no faces). Throws
 // std::invalid_argument on invalid options.
 ShapeMetrics ComputeShapeMetrics(const Mesh& output, const Mesh& target, const MetricsOptions& options = {});
+// A point-cloud `target` (no faces) with #V by 3 unit normals: distances to it are to the surface
+// it samples (core/cloud_surface.h), so the output-to-target terms have no sampling floor.
+ShapeMetrics ComputeShapeMetrics(const Mesh& output, const Mesh& target, const Positions<double>& target_normals,
+                                 const MetricsOptions& options = {});
 
 // The sampling noise floor: the target against an independent resampling of itself
 // (sample-to-sample distances; point-to-surface distances of a surface to itself are 0).

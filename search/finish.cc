@@ -23,7 +23,7 @@ Json Simplify(Evaluator* evaluator, Json document) {
     try {
       Sequence sequence = evaluator->Parse(candidate);
       const Mesh result = EvaluateSequence(&sequence).back();
-      return ComputeShapeMetrics(result, evaluator->target().shape(), metrics_options).chamfer.Sum();
+      return ComputeTargetMetrics(result, evaluator->target(), metrics_options).chamfer.Sum();
     } catch (const std::runtime_error&) {
       return std::numeric_limits<double>::infinity();  // the ops after it need the removed op
     }

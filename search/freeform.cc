@@ -62,7 +62,7 @@ double Chamfer(const Evaluator& evaluator, const Json& document) {
   options.num_samples = 3000;
   options.seed = evaluator.options().seed;
   Sequence sequence = evaluator.Parse(document);
-  return ComputeShapeMetrics(EvaluateSequence(&sequence).back(), evaluator.target().shape(), options).chamfer.Sum();
+  return ComputeTargetMetrics(EvaluateSequence(&sequence).back(), evaluator.target(), options).chamfer.Sum();
 }
 
 struct Candidate {

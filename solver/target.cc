@@ -42,6 +42,13 @@ Target::Target(Mesh shape, Positions<double> cloud_normals, const TargetOptions&
   if (normals_.size() != points_.size()) normals_ = EstimatePointNormals(points_, options.normal_neighbours);
 }
 
+ShapeMetrics ComputeTargetMetrics(const Mesh& output, const Target& target, const MetricsOptions& options) {
+  if (!target.is_cloud()) return ComputeShapeMetrics(output, target.shape(), options);
+  Mesh cloud;
+  cloud.vertices = target.points();
+  return ComputeShapeMetrics(output, cloud, target.normals(), options);
+}
+
 std::unique_ptr<Target> LoadTarget(const std::string& path, const TargetOptions& options) {
   const std::string problem = options.Check();
   if (!problem.empty()) throw std::runtime_error("target options: " + problem);

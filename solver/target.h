@@ -11,6 +11,7 @@
 #include <string>
 
 #include "core/mesh.h"
+#include "core/metrics.h"
 #include "core/nearest.h"
 
 namespace opgraph {
@@ -50,6 +51,11 @@ class Target {
   Positions<double> normals_;
   std::unique_ptr<PointTree> tree_;
 };
+
+// The metrics of `output` against the target: its mesh, or the surface its cloud samples (the
+// cloud's points and normals: core/cloud_surface.h), so a fit to a cloud is judged without the
+// cloud's sampling floor.
+ShapeMetrics ComputeTargetMetrics(const Mesh& output, const Target& target, const MetricsOptions& options);
 
 // Loads `path` with ReadInput. Throws std::runtime_error with a one-line message naming the
 // problem.

@@ -4,8 +4,10 @@
 #include <cmath>
 #include <random>
 
+#include "core/cloud_surface.h"
 #include "core/metrics.h"
 #include "core/nearest.h"
+#include "io/read_input.h"
 #include "ops/sequence.h"
 
 namespace opgraph {
@@ -77,6 +79,50 @@ TEST(Metrics, PointCloudTarget) {
   // square of side 1/2 to a corner, (1/2) (sqrt(2) + asinh(1)) / 3.
   const double expected = 0.5 * (std::sqrt(2.0) + std::asinh(1.0)) / 3.0;
   EXPECT_NEAR(m.chamfer.output_to_target, expected, 0.005);
+}
+
+// `count` area-weighted samples of `shape` as a cloud (no faces), with the faces' normals.
+Mesh SampledCloud(const Mesh& shape, int count, Positions<double>* normals) {
+  const SurfaceSamples samples = SampleSurface(shape.vertices, FanTriangulate(shape.faces), count, 7);
+  Mesh cloud;
+  cloud.vertices = samples.points;
+  *normals = samples.normals;
+  return cloud;
+}
+
+TEST(Metrics, CloudWithNormalsIsJudgedAgainstItsSurface) {
+  // A 20k-point cloud of a cube: distances to the nearest point carry a floor of about half the
+  // spacing; distances to the surface the cloud samples match the exact point-to-surface
+  // distances to the cube itself.
+  Positions<double> normals;
+  const Mesh cloud = SampledCloud(MakeCube(2.0), 20000, &normals);
+  for (const double side : {2.0, 2.04, 1.9}) {
+    const ShapeMetrics exact = ComputeShapeMetrics(MakeCube(side), MakeCube(2.0));
+    const ShapeMetrics nearest_point = ComputeShapeMetrics(MakeCube(side), cloud);
+    const ShapeMetrics surface = ComputeShapeMetrics(MakeCube(side), cloud, normals);
+    EXPECT_NEAR(surface.chamfer.output_to_target, exact.chamfer.output_to_target, 3e-4) << side;
+    // The floor shows where the fit is close (far off, the offset dominates the nearest point's).
+    if (side == 2.0) EXPECT_GT(nearest_point.chamfer.output_to_target, 2e-3);
+    EXPECT_EQ(surface.chamfer.target_to_output, nearest_point.chamfer.target_to_output) << side;
+  }
+  // Estimated normals (PCL, 16 neighbours) as for a cloud read without them.
+  const ShapeMetrics exact = ComputeShapeMetrics(MakeCube(2.04), MakeCube(2.0));
+  const ShapeMetrics estimated = ComputeShapeMetrics(MakeCube(2.04), cloud, EstimatePointNormals(cloud.vertices, 16));
+  EXPECT_NEAR(estimated.chamfer.output_to_target, exact.chamfer.output_to_target, 1e-3);
+}
+
+TEST(Metrics, CloudSurfaceEndsAtTheCloudsEdge) {
+  // Output: a square of side 2 over a cloud of the unit square. Its part past the cloud is as far
+  // from the cloud's surface as from the square itself (the exact reference), up to the spacing.
+  Positions<double> normals;
+  const Mesh cloud = SampledCloud(Square(0.0), 20000, &normals);
+  const ShapeMetrics exact = ComputeShapeMetrics(Square(0.0, 2.0), Square(0.0));
+  const ShapeMetrics surface = ComputeShapeMetrics(Square(0.0, 2.0), cloud, normals);
+  EXPECT_GT(exact.chamfer.output_to_target, 0.3);
+  EXPECT_NEAR(surface.chamfer.output_to_target, exact.chamfer.output_to_target, 0.02);
+  const CloudSurface surface_of_cloud(cloud.vertices, normals);
+  EXPECT_NEAR(surface_of_cloud.Distance(Vec3d(0.5, 0.5, 0.01)), 0.01, 1e-9);  // over the square
+  EXPECT_NEAR(surface_of_cloud.Distance(Vec3d(1.5, 0.5, 0.0)), 0.5, 0.03);   // beside it
 }
 
 TEST(Metrics, Wiring) {
