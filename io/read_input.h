@@ -32,8 +32,9 @@ struct InputGeometry {
 // verbosity is lowered, so a host's own PCL messages on another thread may be silenced then.
 InputGeometry ReadInput(const std::string& path);
 
-// Estimates unit normals of a point cloud from its `k` nearest neighbours (PCL), oriented away
-// from the cloud's centroid. `points`: #P positions. Returns #P normals.
+// Estimates unit normals of a point cloud from its `k` nearest neighbours (PCL), oriented
+// consistently over the surface and outwards (io/orient_normals.h); away from the cloud's
+// centroid where that cannot reach. `points`: #P positions. Returns #P normals.
 Positions<double> EstimatePointNormals(const Positions<double>& points, int k = 16);
 
 }  // namespace opgraph

@@ -14,6 +14,7 @@
 #include <pcl/io/pcd_io.h>
 #include <pcl/point_types.h>
 
+#include "core/nearest.h"
 #include "core/obj_io.h"
 #include "core/surface_distance.h"
 
@@ -157,6 +158,43 @@ TEST(EstimatePointNormals, SphereNormalsAreRadial) {
     worst = std::min(worst, normals[i].dot((points[i] - Vec3d(1, 2, 3)).normalized()));
   }
   EXPECT_GT(worst, 0.98);
+}
+
+// Samples of a T (a slab on a leg) with their true outward normals: the slab's underside faces
+// down although it lies above the T's centroid, so "away from the centroid" turns it inwards.
+void SampleT(Positions<double>* points, Positions<double>* normals) {
+  auto box = [](const Vec3d& lo, const Vec3d& hi) {
+    Mesh cube = MakeCube(2.0);
+    for (Vec3d& v : cube.vertices) v = lo + 0.5 * (v + Vec3d::Ones()).cwiseProduct(hi - lo);
+    return cube;
+  };
+  const Mesh slab = box(Vec3d(-1, -1, 0), Vec3d(1, 1, 0.2)), leg = box(Vec3d(-0.2, -0.2, -1.5), Vec3d(0.2, 0.2, 0));
+  auto under_slab = [](const Vec3d& p) { return std::abs(p.z()) < 1e-9 && std::abs(p.x()) < 0.2 && std::abs(p.y()) < 0.2; };
+  for (const auto& [part, count] : {std::pair<const Mesh*, int>{&slab, 15000}, {&leg, 5000}}) {
+    const SurfaceSamples samples = SampleSurface(part->vertices, FanTriangulate(part->faces), count, 3);
+    for (size_t i = 0; i < samples.points.size(); ++i) {
+      if (under_slab(samples.points[i])) continue;  // the joint: inside the T
+      points->push_back(samples.points[i]);
+      normals->push_back(samples.normals[i]);
+    }
+  }
+}
+
+TEST(EstimatePointNormals, AConcavePartIsOrientedOutwards) {
+  Positions<double> points, truth;
+  SampleT(&points, &truth);
+  const Positions<double> normals = EstimatePointNormals(points, 16);
+  Vec3d centroid = Vec3d::Zero();
+  for (const Vec3d& p : points) centroid += p;
+  centroid /= static_cast<double>(points.size());
+  int wrong = 0, wrong_by_centroid = 0;
+  for (size_t i = 0; i < points.size(); ++i) {
+    wrong += normals[i].dot(truth[i]) < 0;
+    wrong_by_centroid += truth[i].dot(points[i] - centroid) < 0;  // where the old rule flips a true normal
+  }
+  const double n = static_cast<double>(points.size());
+  EXPECT_GT(wrong_by_centroid / n, 0.2);  // the case the old rule gets wrong
+  EXPECT_LT(wrong / n, 0.01);
 }
 
 struct BadFile {

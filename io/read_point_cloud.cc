@@ -14,6 +14,7 @@
 #include <stdexcept>
 #include <vector>
 
+#include "io/orient_normals.h"
 #include "io/pcd_header.h"
 #include "io/read_in_child_process.h"
 
@@ -124,6 +125,7 @@ Positions<double> EstimatePointNormals(const Positions<double>& points, int k) {
     if (n.dot(points[i] - centroid) < 0) n = -n;
     result[i] = n.normalized();
   }
+  OrientNormalsConsistently(points, k, &result);
   return result;
 }
 
