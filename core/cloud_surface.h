@@ -28,8 +28,6 @@ class CloudSurface {
   CloudSurface& operator=(const CloudSurface&) = delete;
 
   double Distance(const Vec3d& query) const;
-  // #N local spacings (s above).
-  const std::vector<double>& spacing() const { return spacing_; }
 
  private:
   const Positions<double>& points_;
