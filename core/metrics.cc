@@ -34,26 +34,32 @@ Positions<double> Normalised(const Positions<double>& points, const Vec3d& centr
   return out;
 }
 
+// Where distances to a cloud's surface are measured: `surface`, built in the cloud's own frame,
+// which is the unit box's scaled by 1 / scale about centre.
+struct SurfaceInFrame {
+  const CloudSurface* surface = nullptr;
+  Vec3d centre = Vec3d::Zero();
+  double scale = 1;
+  double Distance(const Vec3d& unit_point) const { return scale * surface->Distance(unit_point / scale + centre); }
+};
+
 // Distances from `samples` to a shape: its surface when it has triangles, else the surface its
-// points sample when `normals` are given, else its points.
+// points sample when `cloud.surface` is given, else its points.
 struct DistanceStats {
   double mean = 0, mean_squared = 0, normal_dot = 0;
   int within_001 = 0, within_002 = 0;
 };
 
 DistanceStats DistancesToShape(const SurfaceSamples& samples, const Positions<double>& positions,
-                               const std::vector<MeshTriangle>& triangles, const Positions<double>* normals) {
+                               const std::vector<MeshTriangle>& triangles, const SurfaceInFrame& cloud) {
   DistanceStats stats;
   const int n = static_cast<int>(samples.points.size());
   if (n == 0) return stats;
   std::unique_ptr<TriangleTree> surface;
   std::unique_ptr<PointTree> points;
-  std::unique_ptr<CloudSurface> cloud;
   if (!triangles.empty()) {
     surface.reset(new TriangleTree(positions, triangles));
-  } else if (normals) {
-    cloud.reset(new CloudSurface(positions, *normals));
-  } else {
+  } else if (cloud.surface == nullptr) {
     points.reset(new PointTree(positions));
   }
   for (int i = 0; i < n; ++i) {
@@ -62,8 +68,8 @@ DistanceStats DistancesToShape(const SurfaceSamples& samples, const Positions<do
       const ClosestPoint c = surface->Closest(samples.points[i]);
       squared = c.squared_distance;
       if (!samples.normals.empty()) stats.normal_dot += std::abs(samples.normals[i].dot(surface->Normal(c.triangle)));
-    } else if (cloud) {
-      const double d = cloud->Distance(samples.points[i]);
+    } else if (cloud.surface) {
+      const double d = cloud.Distance(samples.points[i]);
       squared = d * d;
     } else {
       points->Nearest(samples.points[i], &squared);
@@ -104,14 +110,9 @@ double F1(double precision, double recall) {
   return precision + recall > 0 ? 2 * precision * recall / (precision + recall) : 0;
 }
 
-}  // namespace
-
-ShapeMetrics ComputeShapeMetrics(const Mesh& output, const Mesh& target, const MetricsOptions& options) {
-  return ComputeShapeMetrics(output, target, Positions<double>(), options);
-}
-
-ShapeMetrics ComputeShapeMetrics(const Mesh& output, const Mesh& target, const Positions<double>& target_normals,
-                                 const MetricsOptions& options) {
+// The metrics with distances to a cloud target measured to `cloud_surface` when given.
+ShapeMetrics MetricsAgainst(const Mesh& output, const Mesh& target, const CloudSurface* cloud_surface,
+                            const MetricsOptions& options) {
   const std::string problem = options.Check();
   if (!problem.empty()) throw std::invalid_argument("metrics options: " + problem);
   Vec3d centre;
@@ -130,13 +131,10 @@ ShapeMetrics ComputeShapeMetrics(const Mesh& output, const Mesh& target, const P
     target_samples.points = target_positions;
   }
 
-  const bool cloud_surface = target_triangles.empty() && !target_normals.empty();
-  if (cloud_surface && target_normals.size() != target.vertices.size()) {
-    throw std::invalid_argument("metrics: a cloud's normals must be one per point");
-  }
-  const DistanceStats forward = DistancesToShape(output_samples, target_positions, target_triangles,
-                                                 cloud_surface ? &target_normals : nullptr);
-  const DistanceStats backward = DistancesToShape(target_samples, output_positions, output_triangles, nullptr);
+  SurfaceInFrame cloud;
+  if (target_triangles.empty() && cloud_surface != nullptr) cloud = {cloud_surface, centre, scale};
+  const DistanceStats forward = DistancesToShape(output_samples, target_positions, target_triangles, cloud);
+  const DistanceStats backward = DistancesToShape(target_samples, output_positions, output_triangles, {});
   ShapeMetrics metrics;
   metrics.chamfer = {forward.mean, backward.mean};
   metrics.chamfer_squared = {forward.mean_squared, backward.mean_squared};
@@ -151,6 +149,27 @@ ShapeMetrics ComputeShapeMetrics(const Mesh& output, const Mesh& target, const P
   metrics.sample_chamfer = MeanSquaredNearest(output_samples.points, target_tree) +
                            MeanSquaredNearest(target_samples.points, output_tree);
   return metrics;
+}
+
+}  // namespace
+
+ShapeMetrics ComputeShapeMetrics(const Mesh& output, const Mesh& target, const MetricsOptions& options) {
+  return MetricsAgainst(output, target, nullptr, options);
+}
+
+ShapeMetrics ComputeShapeMetrics(const Mesh& output, const Mesh& target, const Positions<double>& target_normals,
+                                 const MetricsOptions& options) {
+  if (!target.faces.empty() || target_normals.empty()) return MetricsAgainst(output, target, nullptr, options);
+  if (target_normals.size() != target.vertices.size()) {
+    throw std::invalid_argument("metrics: a cloud's normals must be one per point");
+  }
+  const CloudSurface surface(target.vertices, target_normals);
+  return MetricsAgainst(output, target, &surface, options);
+}
+
+ShapeMetrics ComputeShapeMetrics(const Mesh& output, const Mesh& target, const CloudSurface& target_surface,
+                                 const MetricsOptions& options) {
+  return MetricsAgainst(output, target, &target_surface, options);
 }
 
 double SamplingNoiseFloor(const Mesh& target, const MetricsOptions& options) {

@@ -20,6 +20,8 @@
 
 namespace opgraph {
 
+class CloudSurface;
+
 struct ChamferDistance {
   double output_to_target = 0;
   double target_to_output = 0;
@@ -54,6 +56,10 @@ ShapeMetrics ComputeShapeMetrics(const Mesh& output, const Mesh& target, const M
 // A point-cloud `target` (no faces) with #V by 3 unit normals: distances to it are to the surface
 // it samples (core/cloud_surface.h), so the output-to-target terms have no sampling floor.
 ShapeMetrics ComputeShapeMetrics(const Mesh& output, const Mesh& target, const Positions<double>& target_normals,
+                                 const MetricsOptions& options = {});
+// The same with the surface of the cloud `target` built once by the caller (over target.vertices
+// in target's own frame), for callers that measure many outputs against one cloud.
+ShapeMetrics ComputeShapeMetrics(const Mesh& output, const Mesh& target, const CloudSurface& target_surface,
                                  const MetricsOptions& options = {});
 
 // The sampling noise floor: the target against an independent resampling of itself

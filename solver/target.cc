@@ -40,13 +40,14 @@ Target::Target(Mesh shape, Positions<double> cloud_normals, const TargetOptions&
   }
   tree_.reset(new PointTree(points_));
   if (normals_.size() != points_.size()) normals_ = EstimatePointNormals(points_, options.normal_neighbours);
+  cloud_surface_ = std::make_unique<CloudSurface>(points_, normals_);
 }
 
 ShapeMetrics ComputeTargetMetrics(const Mesh& output, const Target& target, const MetricsOptions& options) {
   if (!target.is_cloud()) return ComputeShapeMetrics(output, target.shape(), options);
   Mesh cloud;
   cloud.vertices = target.points();
-  return ComputeShapeMetrics(output, cloud, target.normals(), options);
+  return ComputeShapeMetrics(output, cloud, *target.cloud_surface(), options);
 }
 
 std::unique_ptr<Target> LoadTarget(const std::string& path, const TargetOptions& options) {

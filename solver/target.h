@@ -10,6 +10,7 @@
 #include <memory>
 #include <string>
 
+#include "core/cloud_surface.h"
 #include "core/mesh.h"
 #include "core/metrics.h"
 #include "core/nearest.h"
@@ -42,6 +43,8 @@ class Target {
   const Positions<double>& points() const { return points_; }
   const Positions<double>& normals() const { return normals_; }
   const PointTree& tree() const { return *tree_; }
+  // For a cloud, the surface its points and normals sample (core/cloud_surface.h); else null.
+  const CloudSurface* cloud_surface() const { return cloud_surface_.get(); }
 
  private:
   Mesh shape_;
@@ -50,6 +53,7 @@ class Target {
   Positions<double> points_;
   Positions<double> normals_;
   std::unique_ptr<PointTree> tree_;
+  std::unique_ptr<CloudSurface> cloud_surface_;  // over points_ and normals_, built once
 };
 
 // The metrics of `output` against the target: its mesh, or the surface its cloud samples (the

@@ -5,6 +5,8 @@
 #include <filesystem>
 #include <fstream>
 
+#include "core/metrics.h"
+#include "core/nearest.h"
 #include "core/obj_io.h"
 #include "solver/target.h"
 
@@ -71,6 +73,33 @@ TEST(Target, BadFilesFailWithOneLine) {
     }
   }
   EXPECT_THROW(LoadTarget("/nonexistent/target.obj", TargetOptions()), std::runtime_error);
+}
+
+TEST(Target, CloudMetricsUseTheSurfaceBuiltOnce) {
+  // A cloud far from the unit box (side 20, centred at (100, -50, 3)): the target's surface,
+  // built once in the input frame, gives the metrics of a surface built in the unit box for the
+  // call, and the exact point-to-surface distance to the cube it samples.
+  Mesh cube = MakeCube(20.0);
+  for (Vec3d& v : cube.vertices) v += Vec3d(100, -50, 3);
+  const SurfaceSamples samples = SampleSurface(cube.vertices, FanTriangulate(cube.faces), 20000, 3);
+  Mesh cloud;
+  cloud.vertices = samples.points;
+  TargetOptions options;
+  const Target target(cloud, samples.normals, options);
+  ASSERT_NE(target.cloud_surface(), nullptr);
+  Mesh larger = MakeCube(20.4);
+  for (Vec3d& v : larger.vertices) v += Vec3d(100, -50, 3);
+  MetricsOptions metrics_options;
+  metrics_options.num_samples = 3000;
+  const ShapeMetrics cached = ComputeTargetMetrics(larger, target, metrics_options);
+  Mesh target_points;
+  target_points.vertices = target.points();
+  const ShapeMetrics fresh = ComputeShapeMetrics(larger, target_points, target.normals(), metrics_options);
+  EXPECT_NEAR(cached.chamfer.output_to_target, fresh.chamfer.output_to_target, 1e-12);
+  EXPECT_EQ(cached.chamfer.target_to_output, fresh.chamfer.target_to_output);
+  const ShapeMetrics exact = ComputeShapeMetrics(larger, cube, metrics_options);
+  EXPECT_NEAR(cached.chamfer.output_to_target, exact.chamfer.output_to_target, 3e-4);
+  EXPECT_GT(cached.chamfer.output_to_target, 5e-3);  // the offset (0.01 of the unit box) shows
 }
 
 }  // namespace
