@@ -34,6 +34,13 @@ std::vector<Round> ProposeLoopMoves(const Layout& best, const FaceResiduals& res
 // of the identity, with rings along the long axis when there is no profile to bend smoothly.
 std::vector<Round> ProposeDeforms(const Layout& best);
 
+// The profile's loop count, as alternatives of one decision: a bare LoopCut (a twist's or a
+// bend's rings) with each other count from 1 to 12, a profile with a scale per loop with each
+// other count from 1 to 8, its scales resampled from the fitted ones. The fit picks the count
+// (a twisted block's facets are where its loops are; a turned profile has as many loops as
+// its steps).
+std::vector<Round> ProposeLoopCounts(const Layout& best);
+
 // A ridge or a peak (a gable roof): a loop cut across one axis, and the cut's vertices on one
 // side of another axis raised along it; every axis pair and side, as alternatives.
 std::vector<Round> ProposeRidges(const Layout& best);

@@ -8,6 +8,7 @@
 #include "ops/builders.h"
 #include "ops/sequence.h"
 #include "search/face_residuals.h"
+#include "search/loop_ops.h"
 #include "search/pose.h"
 
 namespace opgraph {
@@ -217,6 +218,51 @@ TEST(Proposals, EveryStructuredFamilyEvaluates) {
   Layout profiled = pose;
   ProposeProfiles(pose)[0].alternatives[0](&profiled);
   EXPECT_EQ(profiled.profile[0]["params"]["axis"], "Z");
+}
+
+TEST(Proposals, LoopCountsOfADeformationsRings) {
+  Layout twisted = PoseLayoutOnBox(Eigen::Matrix3d::Identity(), Vec3d(-0.4, -0.3, -1), Vec3d(0.4, 0.3, 1));
+  EXPECT_TRUE(ProposeLoopCounts(twisted).empty());  // no profile
+  twisted.profile = {build::LoopCut(Axis::kZ, 7, Vec3d::Zero())};
+  EXPECT_TRUE(ProposeLoopCounts(twisted).empty());  // rings that nothing uses
+  twisted.deforms = {build::SimpleDeform(build::Deform::kTwist, Axis::kZ, 60)};
+  const std::vector<Round> rounds = ProposeLoopCounts(twisted);
+  ASSERT_EQ(rounds.size(), 1u);
+  std::vector<int> counts;
+  for (const Edit& edit : rounds[0].alternatives) {
+    Layout changed = twisted;
+    ASSERT_FALSE(edit(&changed).empty());
+    ASSERT_EQ(changed.profile.size(), 1u);
+    counts.push_back(changed.profile[0]["params"]["cuts"].get<int>());
+    EXPECT_EQ(changed.profile[0]["params"]["axis"], "Z");
+  }
+  EXPECT_EQ(counts, (std::vector<int>{1, 2, 3, 4, 5, 6, 8, 9, 10, 11, 12}));
+  EXPECT_EQ(ExpectAllEvaluate(twisted, rounds), 11);
+}
+
+TEST(Proposals, LoopCountsResampleAProfilesScales) {
+  Layout turned = PoseLayoutOnBox(Eigen::Matrix3d::Identity(), Vec3d(-0.5, -0.5, -1), Vec3d(0.5, 0.5, 1));
+  turned.profile = LoopCutWithScales(2, 2, 4);  // loops at z = -1/3 and 1/3
+  turned.profile[1]["params"]["scale"] = ToJson(Vec3d(0.5, 0.5, 1));
+  turned.profile[2]["params"]["scale"] = ToJson(Vec3d(0.8, 0.8, 1));
+  const std::vector<Round> rounds = ProposeLoopCounts(turned);
+  ASSERT_EQ(rounds.size(), 1u);
+  ASSERT_EQ(rounds[0].alternatives.size(), 7u);  // 1, 3, ..., 8
+  Layout three = turned;
+  ASSERT_FALSE(rounds[0].alternatives[1](&three).empty());
+  ASSERT_EQ(three.profile.size(), 4u);
+  EXPECT_EQ(three.profile[0]["params"]["cuts"], 3);
+  // Loops at z = -1/2, 0, 1/2: between the end face (1) and the first loop, between the loops,
+  // between the last loop and the other end face.
+  const double expected[] = {1 + (0.5 - 1) * 0.75, 0.65, 0.8 + (1 - 0.8) * 0.25};
+  for (int k = 0; k < 3; ++k) {
+    EXPECT_NEAR(three.profile[k + 1]["params"]["scale"][0].get<double>(), expected[k], 1e-12) << k;
+    EXPECT_NEAR(three.profile[k + 1]["params"]["scale"][2].get<double>(), 1.0, 1e-12) << k;
+  }
+  EXPECT_EQ(ExpectAllEvaluate(turned, rounds), 7);
+  // Grouped scales are another profile family: no count to change.
+  turned.profile = LoopCutWithScales(2, 2, 4, {{0, 1}});
+  EXPECT_TRUE(ProposeLoopCounts(turned).empty());
 }
 
 }  // namespace

@@ -98,13 +98,19 @@ class StagedSearch {
   }
 
   Trial Smoothing(Trial best) { return ConsiderRounds(&evaluator_, "smooth", best, ProposeSmoothing(best.layout)); }
-  Trial Profiles(Trial best) { return ConsiderRounds(&evaluator_, "profile", best, ProposeProfiles(best.layout)); }
+  Trial Profiles(Trial best) {
+    return Resolution(ConsiderRounds(&evaluator_, "profile", best, ProposeProfiles(best.layout)));
+  }
+  // The profile's loop count, once a profile or a deformation has made it matter.
+  Trial Resolution(Trial best) { return ConsiderRounds(&evaluator_, "resolution", best, ProposeLoopCounts(best.layout)); }
   Trial LoopMoves(Trial best) {
     if (best.layout.profile.empty()) return best;
     const FaceResiduals residuals = ComputeFaceResiduals(target_, best.layout);
     return ConsiderRounds(&evaluator_, "loop", best, ProposeLoopMoves(best.layout, residuals));
   }
-  Trial Deforms(Trial best) { return ConsiderRounds(&evaluator_, "deform", best, ProposeDeforms(best.layout)); }
+  Trial Deforms(Trial best) {
+    return Resolution(ConsiderRounds(&evaluator_, "deform", best, ProposeDeforms(best.layout)));
+  }
   Trial Ridges(Trial best) { return ConsiderRounds(&evaluator_, "ridge", best, ProposeRidges(best.layout)); }
   Trial Holes(Trial best) { return ConsiderRounds(&evaluator_, "hole", best, ProposeHoles(best.layout)); }
   Trial Booleans(Trial best) {
