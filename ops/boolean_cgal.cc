@@ -6,7 +6,10 @@
 #include <CGAL/Polygon_mesh_processing/self_intersections.h>
 #include <CGAL/Surface_mesh.h>
 
+#include <algorithm>
 #include <map>
+#include <numeric>
+#include <tuple>
 
 namespace opgraph {
 namespace {
@@ -29,6 +32,31 @@ std::string ToSurfaceMesh(const TriangleSoup& soup, const std::string& name, Sur
   if (PMP::does_self_intersect(*mesh)) return name + " intersects itself";
   if (!PMP::does_bound_a_volume(*mesh)) return name + " does not bound a volume (inconsistent orientation or nesting)";
   return "";
+}
+
+// CGAL's output order follows its internal containers, some of them ordered by address (so by
+// the heap's layout, which differs between runs and machines): the result is renumbered into an
+// order its geometry alone fixes, vertices by coordinates, each triangle from its lowest vertex
+// (orientation kept), triangles by their vertices; so a fit's topology, and the search, are the
+// same in every process (test FitSequence.SameOutputForAnyHeapLayout).
+void CanonicalOrder(TriangleSoup* soup) {
+  const int n = static_cast<int>(soup->vertices.size());
+  std::vector<int> order(n);
+  std::iota(order.begin(), order.end(), 0);
+  std::stable_sort(order.begin(), order.end(), [soup](int a, int b) {
+    const Vec3d& p = soup->vertices[a];
+    const Vec3d& q = soup->vertices[b];
+    return std::tie(p.x(), p.y(), p.z()) < std::tie(q.x(), q.y(), q.z());
+  });
+  std::vector<int> new_index(n);
+  std::vector<Vec3d> vertices(n);
+  for (int k = 0; k < n; ++k) new_index[order[k]] = k, vertices[k] = soup->vertices[order[k]];
+  soup->vertices = std::move(vertices);
+  for (std::array<int, 3>& t : soup->triangles) {
+    for (int& v : t) v = new_index[v];
+    std::rotate(t.begin(), std::min_element(t.begin(), t.end()), t.end());
+  }
+  std::sort(soup->triangles.begin(), soup->triangles.end());
 }
 
 std::string CgalBooleanUnchecked(const TriangleSoup& a, const TriangleSoup& b, BooleanKind kind, TriangleSoup* out) {
@@ -55,6 +83,7 @@ std::string CgalBooleanUnchecked(const TriangleSoup& a, const TriangleSoup& b, B
     }
     out->triangles.push_back(t);
   }
+  CanonicalOrder(out);
   return "";
 }
 

@@ -32,7 +32,6 @@ bool OnTriangle(const Vec3d& p, const Vec3d& a, const Vec3d& b, const Vec3d& c, 
   return true;
 }
 
-
 }  // namespace
 
 // CGAL can return one point twice, a rounding apart (a primitive's edge through the diagonal of a
@@ -87,6 +86,7 @@ std::vector<Source> VertexSources(const Operands& ops, const TriangleSoup& resul
     }
   }
   std::vector<Source> sources(result.vertices.size());
+  double worst = 1.0;  // the sine of the worst conditioned crossing
   for (size_t r = 0; r < result.vertices.size(); ++r) {
     const Vec3d& p = result.vertices[r];
     Source& s = sources[r];
@@ -127,13 +127,14 @@ std::vector<Source> VertexSources(const Operands& ops, const TriangleSoup& resul
     // A grazing crossing (an edge within a few degrees of the plane it crosses) moves along the
     // edge by the plane's rounding error over the sine: Blender's float32 coordinates would put
     // it elsewhere, so the sequence would not rebuild the same mesh there.
-    if (best < kMinCrossingSine) {
-      throw FieldError("operation", "the primitive crosses the mesh at a grazing angle (" +
-                                        std::to_string(std::asin(best) * 180 / kPi).substr(0, 4) +
-                                        " degrees): the intersection is ill-conditioned");
-    }
+    worst = std::min(worst, best);
   }
-
+  // The worst crossing is named, so the message does not depend on the order of CGAL's points.
+  if (worst < kMinCrossingSine) {
+    throw FieldError("operation", "the primitive crosses the mesh at a grazing angle (" +
+                                      std::to_string(std::asin(worst) * 180 / kPi).substr(0, 4) +
+                                      " degrees): the intersection is ill-conditioned");
+  }
   return sources;
 }
 
