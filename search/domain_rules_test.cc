@@ -36,7 +36,9 @@ TEST(DomainRules, AHolesCutterStaysWithinItsSizeBound) {
   const Json& size = trial.layout.details.at(0)["params"]["size"];
   EXPECT_LE(size[2].get<double>(), 1.01 * kMaxBooleanSize * max_half_extent) << size.dump();
   EXPECT_GE(size[2].get<double>(), 1.0);  // still through the block
-  EXPECT_NEAR(size[0].get<double>(), 0.8, 0.02) << size.dump();  // and the bore is as wide as the target's
+  // And the bore has grown from 0.6 to the target's 0.8, to within what one search fit (eight
+  // correspondence updates) reaches.
+  EXPECT_NEAR(size[0].get<double>(), 0.8, 0.03) << size.dump();
 }
 
 }  // namespace
