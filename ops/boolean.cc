@@ -58,9 +58,6 @@ Vec3<T> Crossing(const Vec3<T>& edge_from, const Vec3<T>& edge_to, const Vec3<T>
   return edge_from + t * (edge_to - edge_from);
 }
 
-
-
-
 }  // namespace
 
 std::string SolidProblem(const Mesh& mesh) {

@@ -24,7 +24,6 @@ double OffPlane(const Positions<double>& vertices, const Polygon& face) {
   return off;
 }
 
-
 }  // namespace
 
 // A cut non-planar input polygon: which diagonal Blender's triangulation takes follows its
@@ -51,9 +50,7 @@ void RefuseCutNonPlanarFaces(const Mesh& input, const TriangleSoup& result, cons
                                         " of the diagonal): Blender's exact boolean may triangulate it differently");
     }
   }
-
 }
-
 
 // Blender retriangulates each operand triangle with a constrained Delaunay triangulation; CGAL's
 // retriangulation need not be Delaunay, and the merge depends on the triangles.
@@ -69,7 +66,6 @@ void MakeDelaunay(const Operands& ops, const std::vector<int>& source_triangle, 
   }
   DelaunayFlips(result->vertices, source_triangle, dominant_axis, &result->triangles);
 }
-
 
 // The triangles of each source polygon merged back into polygons (ops/boolean.h).
 std::vector<Polygon> MergeTriangles(const Mesh& input, const Mesh& primitive, const TriangleSoup& result,
@@ -134,7 +130,6 @@ std::vector<Polygon> MergeTriangles(const Mesh& input, const Mesh& primitive, co
   return merged;
 }
 
-
 // The crossings to dissolve: those that only continue a straight chain between the same two
 // polygons.
 std::vector<bool> StraightCrossings(const std::vector<Polygon>& merged, const TriangleSoup& result,
@@ -165,6 +160,5 @@ std::vector<bool> StraightCrossings(const std::vector<Polygon>& merged, const Tr
   }
   return dissolve;
 }
-
 
 }  // namespace opgraph

@@ -61,7 +61,6 @@ void WeldCoincidentPoints(double tolerance, TriangleSoup* soup) {
   soup->triangles = std::move(triangles);
 }
 
-
 // Provenance of CGAL's vertices, recovered geometrically (CGAL's points are its exact ones
 // rounded to double): an operand vertex at the same coordinates, else the best conditioned
 // crossing of an edge of one operand with a triangle of the other through the point.
@@ -124,12 +123,12 @@ std::vector<Source> VertexSources(const Operands& ops, const TriangleSoup& resul
       }
     }
     if (best <= 1e-6) throw FieldError("operation", "internal: an intersection point of the boolean has no source");
-    // A grazing crossing (an edge within a few degrees of the plane it crosses) moves along the
-    // edge by the plane's rounding error over the sine: Blender's float32 coordinates would put
-    // it elsewhere, so the sequence would not rebuild the same mesh there.
     worst = std::min(worst, best);
   }
-  // The worst crossing is named, so the message does not depend on the order of CGAL's points.
+  // A grazing crossing (an edge within a few degrees of the plane it crosses) moves along the
+  // edge by the plane's rounding error over the sine: Blender's float32 coordinates would put it
+  // elsewhere, so the sequence would not rebuild the same mesh there. The worst is named, so the
+  // message does not depend on the order of CGAL's points.
   if (worst < kMinCrossingSine) {
     throw FieldError("operation", "the primitive crosses the mesh at a grazing angle (" +
                                       std::to_string(std::asin(worst) * 180 / kPi).substr(0, 4) +
@@ -137,7 +136,6 @@ std::vector<Source> VertexSources(const Operands& ops, const TriangleSoup& resul
   }
   return sources;
 }
-
 
 // The source polygon (input's, then primitive's) and operand triangle (likewise) of each result
 // triangle: the operand triangle it is (uncut), else the one its centroid lies on, parallel to
@@ -202,8 +200,6 @@ void TriangleSources(const Operands& ops, int num_input_faces, const TriangleSou
     }
     if ((*source_face)[r] < 0) throw FieldError("operation", "internal: a face of the boolean has no source");
   }
-
 }
-
 
 }  // namespace opgraph

@@ -27,6 +27,7 @@ const char* DeformName(Deform kind) {
 }  // namespace
 
 std::string AxisName(Axis axis) { return axis == Axis::kX ? "X" : axis == Axis::kY ? "Y" : "Z"; }
+Axis AxisNamed(const std::string& name) { return name == "X" ? Axis::kX : name == "Y" ? Axis::kY : Axis::kZ; }
 
 Vec3d AxisVector(Axis axis) { return Vec3d::Unit(static_cast<int>(axis)); }
 

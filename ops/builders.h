@@ -14,6 +14,8 @@ namespace build {
 
 enum class Axis { kX, kY, kZ };
 std::string AxisName(Axis axis);
+// The axis AxisName gives `name` ("X", "Y" or "Z"); Z for any other name.
+Axis AxisNamed(const std::string& name);
 Vec3d AxisVector(Axis axis);
 
 // Faces named geometrically (ops/face_selector.h).

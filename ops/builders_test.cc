@@ -72,5 +72,10 @@ TEST(Builders, EveryOpParsesAndApplies) {
   EXPECT_GT(EvaluateSequence(&bevelled).back().NumFaces(), 6 + 12 * 2);
 }
 
+TEST(Builders, AxisNamesRoundTrip) {
+  using build::Axis;
+  for (Axis axis : {Axis::kX, Axis::kY, Axis::kZ}) EXPECT_EQ(build::AxisNamed(build::AxisName(axis)), axis);
+}
+
 }  // namespace
 }  // namespace opgraph

@@ -13,13 +13,6 @@ constexpr int kMinCuts = 1;
 constexpr int kMaxBareCuts = 12;
 constexpr int kMaxScaledCuts = 8;
 
-build::Axis AxisNamed(const std::string& name) {
-  for (build::Axis axis : {build::Axis::kX, build::Axis::kY, build::Axis::kZ}) {
-    if (build::AxisName(axis) == name) return axis;
-  }
-  return build::Axis::kZ;
-}
-
 // The profile's loop scales at `count` evenly spaced loops (position in (-1, 1) along the axis),
 // interpolated linearly from the fitted scales of the current loops, the cube's end faces
 // (unscaled) at the ends; so a finer or coarser profile starts from the fitted shape.
@@ -62,7 +55,7 @@ std::vector<Round> ProposeLoopCounts(const Layout& best) {
   if (best.profile.empty() || best.profile[0]["op"] != "LoopCut") return {};
   const Json& cut = best.profile[0];
   const int current = cut["params"]["cuts"].get<int>();
-  const int axis = static_cast<int>(AxisNamed(cut["params"]["axis"].get<std::string>()));
+  const int axis = static_cast<int>(build::AxisNamed(cut["params"]["axis"].get<std::string>()));
   const std::string axis_name = build::AxisName(static_cast<build::Axis>(axis));
   // A bare LoopCut is a deformation's resolution: nothing else addresses its loops.
   const bool bare = best.profile.size() == 1 && !best.deforms.empty();
