@@ -45,9 +45,11 @@ std::vector<Round> ProposeLoopCounts(const Layout& best);
 // side of another axis raised along it; every axis pair and side, as alternatives.
 std::vector<Round> ProposeRidges(const Layout& best);
 
-// Holes through the shape (a ring, a handle's eye): a Boolean difference with a prism or a box
-// through the centre along each axis; the fit sizes and places it.
-std::vector<Round> ProposeHoles(const Layout& best);
+// Holes through the shape (a ring, a handle's eye, a slot, a notch): a Boolean difference with
+// a prism or a box through the centre along each axis (the fit sizes and places it), and
+// through each of the two largest `interior` clusters (FindResidualClusters: the target's
+// surface inside the cage, anywhere) along its thinnest and its longest axis.
+std::vector<Round> ProposeHoles(const Layout& best, const std::vector<ResidualCluster>& interior);
 
 // Rounded edges: Bevel on the edges sharper than 30 degrees with 5 segments (also instead of
 // the extrusions, which can imitate a rounded rim), then the segment count.
@@ -62,6 +64,15 @@ std::vector<Round> ProposeExtrusions(const Layout& best, const FaceResiduals& re
 // or a cylinder along each principal axis on the box of each of the four largest residual
 // clusters, anywhere on the shape; at most three Booleans in a sequence, none after a Bevel.
 std::vector<Round> ProposeBooleans(const Layout& best, const std::vector<ResidualCluster>& clusters);
+
+// Shared by the Boolean and hole families: at most kMaxBooleans Booleans in a sequence, and
+// primitives on the kMaxClusters largest residual clusters.
+constexpr int kMaxBooleans = 3;
+constexpr size_t kMaxClusters = 4;
+int CountBooleans(const Layout& layout);
+// A primitive on the cluster's box, its own +Z axis along the cluster's principal axis `axis`;
+// a difference where the cluster is excess material, else a union.
+build::BooleanArgs PrimitiveOnClusterBox(const ResidualCluster& cluster, build::Primitive primitive, int axis);
 
 // Faceted solids: a bisecting KnifeCut across each axis with its new loop scaled (a faceted
 // waist), and on the two quad faces with the most samples beyond them a KnifeCut between

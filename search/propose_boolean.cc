@@ -4,10 +4,6 @@
 #include "search/proposals.h"
 
 namespace opgraph {
-namespace {
-
-// At most this many Boolean ops in a sequence.
-constexpr int kMaxBooleans = 3;
 
 int CountBooleans(const Layout& layout) {
   int count = 0;
@@ -15,8 +11,7 @@ int CountBooleans(const Layout& layout) {
   return count;
 }
 
-// A primitive on the cluster's box, its own +Z axis along principal axis `axis`.
-build::BooleanArgs PrimitiveOnBox(const ResidualCluster& cluster, build::Primitive primitive, int axis) {
+build::BooleanArgs PrimitiveOnClusterBox(const ResidualCluster& cluster, build::Primitive primitive, int axis) {
   const int a = (axis + 1) % 3, b = (axis + 2) % 3;
   Eigen::Matrix3d frame;
   frame << cluster.axes.col(a), cluster.axes.col(b), cluster.axes.col(axis);
@@ -30,20 +25,18 @@ build::BooleanArgs PrimitiveOnBox(const ResidualCluster& cluster, build::Primiti
   return args;
 }
 
-}  // namespace
-
 std::vector<Round> ProposeBooleans(const Layout& best, const std::vector<ResidualCluster>& clusters) {
   std::vector<Round> rounds;
   // A modeller bevels last, and a Boolean cut into a bevelled cage can differ from Blender's.
   if (CountBooleans(best) >= kMaxBooleans || best.HasDetail("Bevel")) return rounds;
-  for (size_t c = 0; c < clusters.size() && c < 4; ++c) {
+  for (size_t c = 0; c < clusters.size() && c < kMaxClusters; ++c) {
     const ResidualCluster& cluster = clusters[c];
     Round round;
     // A box on the cluster, or a cylinder along each of its axes (a boss, a bore, a rod).
     std::vector<std::pair<build::Primitive, int>> shapes = {{build::Primitive::kCube, 2}};
     for (int axis = 0; axis < 3; ++axis) shapes.push_back({build::Primitive::kCylinder, axis});
     for (const auto& [primitive, axis] : shapes) {
-      const Json op = build::Boolean(PrimitiveOnBox(cluster, primitive, axis));
+      const Json op = build::Boolean(PrimitiveOnClusterBox(cluster, primitive, axis));
       const std::string what = std::string("+Boolean ") + (cluster.excess ? "difference " : "union ") +
                                build::PrimitiveName(primitive) + " on a residual cluster of " +
                                std::to_string(cluster.num_samples) + " samples" +

@@ -81,7 +81,8 @@ ResidualCluster BoxOf(const std::vector<Outlier>& group, bool excess, double mar
 
 }  // namespace
 
-std::vector<ResidualCluster> FindResidualClusters(const Target& target, const Layout& layout) {
+std::vector<ResidualCluster> FindResidualClusters(const Target& target, const Layout& layout,
+                                                  std::vector<ResidualCluster>* interior) {
   Sequence sequence = ParseSequence(layout.Document());
   const std::vector<Mesh> steps = EvaluateSequence(&sequence);
   const Mesh& cage = steps[layout.CageStep()];
@@ -95,12 +96,16 @@ std::vector<ResidualCluster> FindResidualClusters(const Target& target, const La
   const Positions<double>& points = target.points();
   const size_t stride = std::max<size_t>(1, points.size() / 3000);
   Positions<double> local;
-  std::vector<Outlier> beyond_cage;
+  std::vector<Outlier> beyond_cage, inside_cage;
   for (size_t i = 0; i < points.size(); i += stride) {
     local.push_back(layout.LocalToCage(world_from_local.transpose() * (points[i] - translation)));
     const ClosestPoint closest = cage_tree.Closest(local.back());
     if (closest.triangle < 0 || closest.squared_distance < threshold * threshold) continue;
-    if ((local.back() - closest.point).dot(cage_tree.Normal(closest.triangle)) > 0) beyond_cage.push_back({local.back(), closest.point});
+    if ((local.back() - closest.point).dot(cage_tree.Normal(closest.triangle)) > 0) {
+      beyond_cage.push_back({local.back(), closest.point});
+    } else {
+      inside_cage.push_back({local.back(), local.back()});  // its box is the target's own surface
+    }
   }
   // Cage samples beyond the target: far from it, and the target's nearest sample not clearly
   // outward (inward, or sideways: the rim of a pocket in the cage's own plane).
@@ -124,8 +129,17 @@ std::vector<ResidualCluster> FindResidualClusters(const Target& target, const La
       if (group.size() >= std::max<size_t>(5, total / 100)) clusters.push_back(BoxOf(group, excess, margin));
     }
   }
-  std::stable_sort(clusters.begin(), clusters.end(),
-                   [](const ResidualCluster& a, const ResidualCluster& b) { return a.num_samples > b.num_samples; });
+  const auto largest_first = [](const ResidualCluster& a, const ResidualCluster& b) {
+    return a.num_samples > b.num_samples;
+  };
+  std::stable_sort(clusters.begin(), clusters.end(), largest_first);
+  if (interior != nullptr) {
+    interior->clear();
+    for (const std::vector<Outlier>& group : Connect(inside_cage, 0.05 * diagonal)) {
+      if (group.size() >= std::max<size_t>(5, local.size() / 100)) interior->push_back(BoxOf(group, true, 0));
+    }
+    std::stable_sort(interior->begin(), interior->end(), largest_first);
+  }
   return clusters;
 }
 

@@ -22,7 +22,10 @@ struct ResidualCluster {
 // of the posed cube's diagonal, joined over a grid of 5% of it; clusters of under 1% of the
 // samples are dropped. Each box reaches to the other surface (a union's primitive overlaps the
 // cage, a difference's cuts through its surface) with a margin of 3% of the diagonal. Largest
-// first. Throws what the sequence's evaluation throws.
-std::vector<ResidualCluster> FindResidualClusters(const Target& target, const Layout& layout);
+// first. With `interior`, also the clusters of target samples inside the cage beyond 3% of
+// the diagonal (a hole's or a notch's walls under the cage: material to remove, whose box is
+// the target's own surface there), largest first. Throws what the sequence's evaluation throws.
+std::vector<ResidualCluster> FindResidualClusters(const Target& target, const Layout& layout,
+                                                  std::vector<ResidualCluster>* interior = nullptr);
 
 }  // namespace opgraph

@@ -112,7 +112,11 @@ class StagedSearch {
     return Resolution(ConsiderRounds(&evaluator_, "deform", best, ProposeDeforms(best.layout)));
   }
   Trial Ridges(Trial best) { return ConsiderRounds(&evaluator_, "ridge", best, ProposeRidges(best.layout)); }
-  Trial Holes(Trial best) { return ConsiderRounds(&evaluator_, "hole", best, ProposeHoles(best.layout)); }
+  Trial Holes(Trial best) {
+    std::vector<ResidualCluster> interior;
+    FindResidualClusters(target_, best.layout, &interior);
+    return ConsiderRounds(&evaluator_, "hole", best, ProposeHoles(best.layout, interior));
+  }
   Trial Booleans(Trial best) {
     const std::vector<ResidualCluster> clusters = FindResidualClusters(target_, best.layout);
     return ConsiderRounds(&evaluator_, "boolean", best, ProposeBooleans(best.layout, clusters));
