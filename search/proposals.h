@@ -45,11 +45,15 @@ std::vector<Round> ProposeLoopCounts(const Layout& best);
 // side of another axis raised along it; every axis pair and side, as alternatives.
 std::vector<Round> ProposeRidges(const Layout& best);
 
-// Holes through the shape (a ring, a handle's eye, a slot, a notch): a Boolean difference with
-// a prism or a box through the centre along each axis (the fit sizes and places it), and
+// Holes through the shape (a ring, a handle's eye): a Boolean difference with a prism or a box
+// through the centre along each axis; the fit sizes and places it.
+std::vector<Round> ProposeHoles(const Layout& best);
+
+// Holes and cuts placed by the residual (a slot, a notch, a bore, anywhere): a Boolean difference
 // through each of the two largest `interior` clusters (FindResidualClusters: the target's
-// surface inside the cage, anywhere) along its thinnest and its longest axis.
-std::vector<Round> ProposeHoles(const Layout& best, const std::vector<ResidualCluster>& interior);
+// surface inside the cage), along its thinnest and its longest axis, as a box in its principal
+// frame, a cylinder, a prism of 6 or 8 sides, or a box square to the cage.
+std::vector<Round> ProposeThroughHoles(const Layout& best, const std::vector<ResidualCluster>& interior);
 
 // Rounded edges: Bevel on the edges sharper than 30 degrees with 5 segments (also instead of
 // the extrusions, which can imitate a rounded rim), then the segment count.

@@ -197,7 +197,7 @@ TEST(Proposals, EveryStructuredFamilyEvaluates) {
   EXPECT_EQ(ExpectAllEvaluate(pose, ProposeProfiles(pose)), 14);  // 7 profiles, each also subdivided
   EXPECT_EQ(ExpectAllEvaluate(pose, ProposeDeforms(pose)), 12);   // along the long axis Z
   EXPECT_EQ(ExpectAllEvaluate(pose, ProposeRidges(pose)), 12);    // axis pairs and sides
-  EXPECT_EQ(ExpectAllEvaluate(pose, ProposeHoles(pose, {})), 9);  // centred; no clusters given
+  EXPECT_EQ(ExpectAllEvaluate(pose, ProposeHoles(pose)), 9);
   EXPECT_EQ(ExpectAllEvaluate(pose, ProposeBevels(pose)), 1);  // the segment rounds need a bevel first
   for (const Expansion& grid : ProposeGrids(pose)) {
     Sequence sequence = ParseSequence(grid.layout.Document());

@@ -115,9 +115,14 @@ Round HoleThroughCluster(const ResidualCluster& cluster, double length) {
 
 }  // namespace
 
-std::vector<Round> ProposeHoles(const Layout& best, const std::vector<ResidualCluster>& interior) {
+std::vector<Round> ProposeHoles(const Layout& best) {
   std::vector<Round> rounds;
   CentredHoles(best, &rounds);
+  return rounds;
+}
+
+std::vector<Round> ProposeThroughHoles(const Layout& best, const std::vector<ResidualCluster>& interior) {
+  std::vector<Round> rounds;
   // A modeller bevels last, and a Boolean cut into a bevelled cage can differ from Blender's.
   if (best.HasDetail("Bevel") || CountBooleans(best) >= kMaxBooleans) return rounds;
   for (size_t c = 0; c < interior.size() && c < kMaxHoleClusters; ++c) {

@@ -112,11 +112,7 @@ class StagedSearch {
     return Resolution(ConsiderRounds(&evaluator_, "deform", best, ProposeDeforms(best.layout)));
   }
   Trial Ridges(Trial best) { return ConsiderRounds(&evaluator_, "ridge", best, ProposeRidges(best.layout)); }
-  Trial Holes(Trial best) {
-    std::vector<ResidualCluster> interior;
-    FindResidualClusters(target_, best.layout, &interior);
-    return ConsiderRounds(&evaluator_, "hole", best, ProposeHoles(best.layout, interior));
-  }
+  Trial Holes(Trial best) { return ConsiderRounds(&evaluator_, "hole", best, ProposeHoles(best.layout)); }
   Trial Booleans(Trial best) {
     const std::vector<ResidualCluster> clusters = FindResidualClusters(target_, best.layout);
     return ConsiderRounds(&evaluator_, "boolean", best, ProposeBooleans(best.layout, clusters));
@@ -126,7 +122,22 @@ class StagedSearch {
     return ConsiderRounds(&evaluator_, "facet", best, ProposeFacets(best.layout, residuals));
   }
   Trial Bevels(Trial best) { return ConsiderRounds(&evaluator_, "bevel", best, ProposeBevels(best.layout)); }
+  // A cavity is explained by an extrusion in or by a cut through the shape, and whichever is
+  // asked first takes the residual the other needs: when a cut pays, both lines (the
+  // extrusions; the cut, then the extrusions) are followed and the better after the price of
+  // its ops is kept.
   Trial Details(Trial best) {
+    const Trial extruded = Extrusions(best);
+    std::vector<ResidualCluster> interior;
+    FindResidualClusters(target_, best.layout, &interior);
+    Trial cut = ConsiderRounds(&evaluator_, "cut", best, ProposeThroughHoles(best.layout, interior));
+    if (cut.layout.NumOps() == best.layout.NumOps()) return extruded;
+    cut = Extrusions(cut);
+    const bool keep_cut = Score(best, cut) < Score(best, extruded);
+    evaluator_.Note(std::string("cut: kept the line ") + (keep_cut ? "with" : "without") + " the cut");
+    return keep_cut ? cut : extruded;
+  }
+  Trial Extrusions(Trial best) {
     const FaceResiduals residuals = ComputeFaceResiduals(target_, best.layout);
     return ConsiderRounds(&evaluator_, "detail", best, ProposeExtrusions(best.layout, residuals));
   }
