@@ -26,8 +26,9 @@ std::vector<Round> ProposeSmoothing(const Layout& best);
 // simpler one only when it pays for its extra ops.
 std::vector<Round> ProposeProfiles(const Layout& best);
 
-// Stepped or tilted profiles: EdgeLoopAffineTranslate or EdgeLoopAffineRotate on the two loop
-// groups of the profile with the most residual near them.
+// Stepped or tilted profiles: a loop group's scale replaced by EdgeLoopAffineRotate or
+// EdgeLoopAffineTranslate (the two groups with the most residual near them), then either added
+// to them; a rotation from a tilt either way about either axis in the loop's plane.
 std::vector<Round> ProposeLoopMoves(const Layout& best, const FaceResiduals& residuals);
 
 // Twist, taper and stretch (along the long axis) and bend (about the others), from both sides

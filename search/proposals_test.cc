@@ -168,7 +168,15 @@ TEST(Proposals, LoopMovesOnTheProfileNearTheResidual) {
   ASSERT_FALSE(ProposeProfiles(profiled)[2].alternatives[0](&profiled).empty());  // x2, each loop scaled
   const std::vector<Round> rounds = ProposeLoopMoves(profiled, ComputeFaceResiduals(*target, profiled));
   ASSERT_FALSE(rounds.empty());
-  EXPECT_EQ(ExpectAllEvaluate(profiled, rounds), 2 * static_cast<int>(rounds.size()));
+  EXPECT_EQ(ExpectAllEvaluate(profiled, rounds), 5 * static_cast<int>(rounds.size()));  // a shift, four tilts
+  // The first rounds replace a loop group's scale: the same ops but one.
+  Layout tilted = profiled;
+  ASSERT_FALSE(rounds[0].alternatives[1](&tilted).empty());
+  EXPECT_EQ(tilted.NumOps(), profiled.NumOps());
+  // The rotation acts on the scaled cage (a tilt does not commute with an unequal scale).
+  ASSERT_FALSE(tilted.details.empty());
+  EXPECT_EQ(tilted.details[0]["op"], "EdgeLoopAffineRotate");
+  EXPECT_EQ(tilted.profile.size() + 1, profiled.profile.size());
 }
 
 TEST(Proposals, FacetRidgeOnTheFaceBelowIt) {

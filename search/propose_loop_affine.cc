@@ -2,6 +2,7 @@
 #include <algorithm>
 #include <cmath>
 
+#include "search/layout.h"
 #include "search/proposals.h"
 
 namespace opgraph {
@@ -19,6 +20,49 @@ size_t ResidualNear(const FaceResiduals& residuals, int axis, double position, d
   return count;
 }
 
+// Removes `op` (a loop scale of the profile) from `layout`'s profile; false when it has none.
+bool RemoveFromProfile(Layout* layout, const Json& op) {
+  const auto found = std::find(layout->profile.begin(), layout->profile.end(), op);
+  if (found == layout->profile.end()) return false;
+  layout->profile.erase(found);
+  return true;
+}
+
+// Where a loop's tilt starts: a tilt about an axis in the loop's plane slides the loop's
+// vertices along the box's faces, which leaves the surface unchanged to first order, so a fit
+// from no tilt stays there; it starts at kTiltStartDeg either way about either axis.
+constexpr double kTiltStartDeg = 12;
+std::vector<Vec3d> TiltStarts(int axis) {
+  std::vector<Vec3d> starts;
+  for (int about = 0; about < 3; ++about) {
+    if (about == axis) continue;
+    for (const double sign : {1.0, -1.0}) starts.push_back(sign * kTiltStartDeg * Vec3d::Unit(about));
+  }
+  return starts;
+}
+
+std::string StartName(const Vec3d& start) {
+  for (int a = 0; a < 3; ++a) {
+    if (start[a] != 0) return std::string(" (from ") + (start[a] > 0 ? "+" : "-") + "XYZ"[a] + ")";
+  }
+  return "";
+}
+
+// A rotation of the profile's loop group `verts` (a box along `axis` on the 2x2x2 cube), from
+// `rotation_deg`, put first after the cage's scale: a rotation does not commute with an unequal scale, so a loop
+// tilted on the scaled shape (a modeller's tilt) is not a rotation before it. False when ops
+// after the scale (a ridge, a deformation, a grid across the loop) move or add the loop's vertices.
+bool AddRotateAfterScale(Layout* layout, build::VertexTarget verts, int axis, const Vec3d& rotation_deg) {
+  if (!layout->ridge.empty() || !layout->deforms.empty() || !layout->grid.empty()) return false;
+  if (!verts.box.lo[axis] || !verts.box.hi[axis]) return false;
+  const double scale = layout->scale["params"]["scale"][axis].get<double>();
+  verts.box.lo[axis] = *verts.box.lo[axis] * scale;
+  verts.box.hi[axis] = *verts.box.hi[axis] * scale;
+  if (scale < 0) std::swap(verts.box.lo[axis], verts.box.hi[axis]);
+  layout->details.insert(layout->details.begin(), build::EdgeLoopRotate(verts, rotation_deg));
+  return true;
+}
+
 }  // namespace
 
 std::vector<Round> ProposeLoopMoves(const Layout& best, const FaceResiduals& residuals) {
@@ -26,11 +70,13 @@ std::vector<Round> ProposeLoopMoves(const Layout& best, const FaceResiduals& res
     build::VertexTarget verts;
     int axis;
     size_t residual;
+    size_t index;  // of its scale in the profile
   };
   // The profile's loop groups: the boxes of its loop scales, along the profile's cut axis.
   std::vector<Loop> loops;
   const Json* cut = nullptr;
-  for (const Json& op : best.profile) {
+  for (size_t index = 0; index < best.profile.size(); ++index) {
+    const Json& op = best.profile[index];
     if (op["op"] == "LoopCut") cut = &op;
     if (op["op"] != "EdgeLoopAffineScale" || cut == nullptr) continue;
     const Json& box = op["params"]["verts"]["box"];
@@ -39,7 +85,7 @@ std::vector<Round> ProposeLoopMoves(const Layout& best, const FaceResiduals& res
       if (!box[0][a].is_null()) axis = a;
     }
     if (axis < 0) continue;
-    Loop loop{{Box::Parse(box, "box"), op["params"]["verts"].value("expect", -1)}, axis, 0};
+    Loop loop{{Box::Parse(box, "box"), op["params"]["verts"].value("expect", -1)}, axis, 0, index};
     // The cage is scaled after the profile: the loop's position in the cage's frame.
     const double scale = best.scale["params"]["scale"][axis].get<double>();
     const double lo = box[0][axis].get<double>() * scale, hi = box[1][axis].get<double>() * scale;
@@ -48,23 +94,48 @@ std::vector<Round> ProposeLoopMoves(const Layout& best, const FaceResiduals& res
   }
   std::stable_sort(loops.begin(), loops.end(), [](const Loop& a, const Loop& b) { return a.residual > b.residual; });
   std::vector<Round> rounds;
+  // A loop tilted or shifted rather than scaled: the scale replaced (no op added), on the two
+  // loop groups with the most residual. Tried even where no residual sample stands out: a scale
+  // imitates a slight tilt to within the sampling, and only the fit tells them apart.
+  for (size_t i = 0; i < loops.size() && i < 2; ++i) {
+    const Json scale_op = best.profile[loops[i].index];
+    const build::VertexTarget verts = loops[i].verts;
+    const int axis = loops[i].axis;
+    const std::string which = " on the loop group " + std::to_string(i + 1) + " nearest the residual";
+    Round round;
+    round.alternatives.push_back([=](Layout* l) -> std::string {
+      if (!RemoveFromProfile(l, scale_op)) return "";
+      l->profile.push_back(build::EdgeLoopTranslate(verts, Vec3d::Zero()));
+      return "EdgeLoopAffineScale -> EdgeLoopAffineTranslate" + which;
+    });
+    for (const Vec3d& start : TiltStarts(axis)) {
+      round.alternatives.push_back([=](Layout* l) -> std::string {
+        if (!RemoveFromProfile(l, scale_op) || !AddRotateAfterScale(l, verts, axis, start)) return "";
+        return "EdgeLoopAffineScale -> EdgeLoopAffineRotate" + which + StartName(start);
+      });
+    }
+    rounds.push_back(round);
+  }
   for (size_t i = 0; i < loops.size() && i < 2; ++i) {
     if (loops[i].residual == 0) break;
     const build::VertexTarget verts = loops[i].verts;
-    // Appended to the profile, so they act on the loops before the cage is scaled.
-    const Json translate = build::EdgeLoopTranslate(verts, Vec3d::Zero());
-    const Json rotate = build::EdgeLoopRotate(verts, Vec3d::Zero());
+    const int axis = loops[i].axis;
     const std::string which = " on the loop group " + std::to_string(i + 1) + " nearest the residual";
-    rounds.push_back(Round{{[translate, which](Layout* l) -> std::string {
-                              if (l->profile.empty()) return "";
-                              l->profile.push_back(translate);
-                              return "+EdgeLoopAffineTranslate" + which;
-                            },
-                            [rotate, which](Layout* l) -> std::string {
-                              if (l->profile.empty()) return "";
-                              l->profile.push_back(rotate);
-                              return "+EdgeLoopAffineRotate" + which;
-                            }}});
+    Round round;
+    round.alternatives.push_back([=](Layout* l) -> std::string {
+      if (l->profile.empty()) return "";
+      // Appended to the profile, so it acts on the loops before the cage is scaled (a
+      // translation commutes with the scale; scale_first.h maps it).
+      l->profile.push_back(build::EdgeLoopTranslate(verts, Vec3d::Zero()));
+      return "+EdgeLoopAffineTranslate" + which;
+    });
+    for (const Vec3d& start : TiltStarts(axis)) {
+      round.alternatives.push_back([=](Layout* l) -> std::string {
+        if (l->profile.empty() || !AddRotateAfterScale(l, verts, axis, start)) return "";
+        return "+EdgeLoopAffineRotate" + which + StartName(start);
+      });
+    }
+    rounds.push_back(round);
   }
   return rounds;
 }
