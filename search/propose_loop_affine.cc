@@ -49,9 +49,10 @@ std::string StartName(const Vec3d& start) {
 }
 
 // A rotation of the profile's loop group `verts` (a box along `axis` on the 2x2x2 cube), from
-// `rotation_deg`, put first after the cage's scale: a rotation does not commute with an unequal scale, so a loop
-// tilted on the scaled shape (a modeller's tilt) is not a rotation before it. False when ops
-// after the scale (a ridge, a deformation, a grid across the loop) move or add the loop's vertices.
+// `rotation_deg`, put first after the cage's scale: a rotation does not commute with an unequal
+// scale, so a loop tilted on the scaled shape (a modeller's tilt) is not a rotation before it.
+// False when ops after the scale (a ridge, a deformation, a grid across the loop) move or add the
+// loop's vertices.
 bool AddRotateAfterScale(Layout* layout, build::VertexTarget verts, int axis, const Vec3d& rotation_deg) {
   if (!layout->ridge.empty() || !layout->deforms.empty() || !layout->grid.empty()) return false;
   if (!verts.box.lo[axis] || !verts.box.hi[axis]) return false;
@@ -61,6 +62,32 @@ bool AddRotateAfterScale(Layout* layout, build::VertexTarget verts, int axis, co
   if (scale < 0) std::swap(verts.box.lo[axis], verts.box.hi[axis]);
   layout->details.insert(layout->details.begin(), build::EdgeLoopRotate(verts, rotation_deg));
   return true;
+}
+
+// A shift and four tilts of the loop group `verts` (along `axis`, the `rank`-th nearest the
+// residual): in place of the profile's loop scale `replaced`, or beside it when that is null.
+// A shift joins the profile (it acts before the cage's scale, which it commutes with;
+// scale_first.h maps it); a tilt acts after the scale (AddRotateAfterScale).
+Round LoopMoveRound(const build::VertexTarget& verts, int axis, size_t rank, const Json& replaced) {
+  const std::string which = " on the loop group " + std::to_string(rank + 1) + " nearest the residual";
+  const std::string change = replaced.is_null() ? "+" : "EdgeLoopAffineScale -> ";
+  // The scale out of the profile (or nothing to remove); false when the layout has no such profile.
+  auto prepare = [replaced](Layout* l) {
+    return replaced.is_null() ? !l->profile.empty() : RemoveFromProfile(l, replaced);
+  };
+  Round round;
+  round.alternatives.push_back([=](Layout* l) -> std::string {
+    if (!prepare(l)) return "";
+    l->profile.push_back(build::EdgeLoopTranslate(verts, Vec3d::Zero()));
+    return change + "EdgeLoopAffineTranslate" + which;
+  });
+  for (const Vec3d& start : TiltStarts(axis)) {
+    round.alternatives.push_back([=](Layout* l) -> std::string {
+      if (!prepare(l) || !AddRotateAfterScale(l, verts, axis, start)) return "";
+      return change + "EdgeLoopAffineRotate" + which + StartName(start);
+    });
+  }
+  return round;
 }
 
 }  // namespace
@@ -98,44 +125,11 @@ std::vector<Round> ProposeLoopMoves(const Layout& best, const FaceResiduals& res
   // loop groups with the most residual. Tried even where no residual sample stands out: a scale
   // imitates a slight tilt to within the sampling, and only the fit tells them apart.
   for (size_t i = 0; i < loops.size() && i < 2; ++i) {
-    const Json scale_op = best.profile[loops[i].index];
-    const build::VertexTarget verts = loops[i].verts;
-    const int axis = loops[i].axis;
-    const std::string which = " on the loop group " + std::to_string(i + 1) + " nearest the residual";
-    Round round;
-    round.alternatives.push_back([=](Layout* l) -> std::string {
-      if (!RemoveFromProfile(l, scale_op)) return "";
-      l->profile.push_back(build::EdgeLoopTranslate(verts, Vec3d::Zero()));
-      return "EdgeLoopAffineScale -> EdgeLoopAffineTranslate" + which;
-    });
-    for (const Vec3d& start : TiltStarts(axis)) {
-      round.alternatives.push_back([=](Layout* l) -> std::string {
-        if (!RemoveFromProfile(l, scale_op) || !AddRotateAfterScale(l, verts, axis, start)) return "";
-        return "EdgeLoopAffineScale -> EdgeLoopAffineRotate" + which + StartName(start);
-      });
-    }
-    rounds.push_back(round);
+    rounds.push_back(LoopMoveRound(loops[i].verts, loops[i].axis, i, best.profile[loops[i].index]));
   }
-  for (size_t i = 0; i < loops.size() && i < 2; ++i) {
-    if (loops[i].residual == 0) break;
-    const build::VertexTarget verts = loops[i].verts;
-    const int axis = loops[i].axis;
-    const std::string which = " on the loop group " + std::to_string(i + 1) + " nearest the residual";
-    Round round;
-    round.alternatives.push_back([=](Layout* l) -> std::string {
-      if (l->profile.empty()) return "";
-      // Appended to the profile, so it acts on the loops before the cage is scaled (a
-      // translation commutes with the scale; scale_first.h maps it).
-      l->profile.push_back(build::EdgeLoopTranslate(verts, Vec3d::Zero()));
-      return "+EdgeLoopAffineTranslate" + which;
-    });
-    for (const Vec3d& start : TiltStarts(axis)) {
-      round.alternatives.push_back([=](Layout* l) -> std::string {
-        if (l->profile.empty() || !AddRotateAfterScale(l, verts, axis, start)) return "";
-        return "+EdgeLoopAffineRotate" + which + StartName(start);
-      });
-    }
-    rounds.push_back(round);
+  // Then either beside the scale, where the residual calls for more.
+  for (size_t i = 0; i < loops.size() && i < 2 && loops[i].residual > 0; ++i) {
+    rounds.push_back(LoopMoveRound(loops[i].verts, loops[i].axis, i, nullptr));
   }
   return rounds;
 }
