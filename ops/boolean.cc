@@ -122,7 +122,9 @@ void BooleanOp::Prepare(const Mesh& input) {
   TriangleSources(operands, input.NumFaces(), result, sources, &source_face, &source_triangle);
   RefuseCutNonPlanarFaces(input, result, source_face, sources);
   MakeDelaunay(operands, source_triangle, &result);
-  const std::vector<Polygon> merged = MergeTriangles(input, primitive, result, source_face, sources);
+  holed_faces_ = HoledInputFaces(input, result, source_face);
+  std::vector<bool> whole;
+  const std::vector<Polygon> merged = MergeTriangles(input, primitive, result, source_face, sources, &whole);
   const std::vector<bool> dissolve = StraightCrossings(merged, result, sources);
 
   // The output: the merged polygons without their dissolved crossings, vertices numbered in
@@ -131,7 +133,10 @@ void BooleanOp::Prepare(const Mesh& input) {
   std::vector<int> output_index(num_result, -1);
   sources_.clear();
   output_faces_.clear();
-  for (Polygon f : merged) {
+  cut_faces_.clear();
+  for (size_t i = 0; i < merged.size(); ++i) {
+    Polygon f = merged[i];
+    if (!whole[i]) cut_faces_.push_back(static_cast<int>(i));
     f.erase(std::remove_if(f.begin(), f.end(), [&dissolve](int v) { return dissolve[v]; }), f.end());
     for (int& v : f) {
       if (output_index[v] < 0) {
@@ -150,6 +155,14 @@ void BooleanOp::Prepare(const Mesh& input) {
 
 const std::vector<Polygon>& BooleanOp::OutputFaces(double gate) const {
   return gate < kGateSwitch ? input_faces_ : output_faces_;
+}
+
+std::vector<int> BooleanOp::FacesOfUnknownLoopStart(double gate) const {
+  return gate < kGateSwitch ? std::vector<int>() : cut_faces_;
+}
+
+std::vector<int> BooleanOp::FacesWhoseLoopStartDecides(double gate) const {
+  return gate < kGateSwitch ? std::vector<int>() : holed_faces_;
 }
 
 template <typename T>

@@ -63,6 +63,11 @@ class BooleanOp : public OpBase<BooleanOp> {
   Json ParamsToJson() const override;
   std::string BlenderCode() const override;
   BlenderStage Stage() const override { return BlenderStage::kModifier; }
+  // The faces this boolean cut (Blender's merge orders their loops by its own triangles), and
+  // the input polygons of 4 or more corners it cuts a hole into (their triangulation, which
+  // follows the loop start, decides where the hole's bridges run).
+  std::vector<int> FacesOfUnknownLoopStart(double gate) const override;
+  std::vector<int> FacesWhoseLoopStartDecides(double gate) const override;
 
   template <typename T>
   void Apply(const T* p, const T& gate, const Positions<T>& in, Positions<T>* out) const;
@@ -90,6 +95,8 @@ class BooleanOp : public OpBase<BooleanOp> {
   Mesh template_;                     // the primitive at unit size, before the affine map
   std::vector<Source> sources_;       // one per output vertex
   std::vector<Polygon> input_faces_;  // the identity's topology (gate below 0.5)
+  std::vector<int> cut_faces_;        // output faces that are not a whole input or primitive face
+  std::vector<int> holed_faces_;      // input faces of 4 or more corners the result holes
 };
 
 }  // namespace opgraph

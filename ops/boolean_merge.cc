@@ -69,7 +69,8 @@ void MakeDelaunay(const Operands& ops, const std::vector<int>& source_triangle, 
 
 // The triangles of each source polygon merged back into polygons (ops/boolean.h).
 std::vector<Polygon> MergeTriangles(const Mesh& input, const Mesh& primitive, const TriangleSoup& result,
-                                    const std::vector<int>& source_face, const std::vector<Source>& sources) {
+                                    const std::vector<int>& source_face, const std::vector<Source>& sources,
+                                    std::vector<bool>* whole) {
   const int num_result_triangles = static_cast<int>(result.triangles.size());
   std::vector<Polygon> polygons(num_result_triangles);
   std::vector<int> parent(num_result_triangles);
@@ -111,6 +112,7 @@ std::vector<Polygon> MergeTriangles(const Mesh& input, const Mesh& primitive, co
     parent[right] = left;
   }
   std::vector<Polygon> merged;
+  whole->clear();
   for (int r = 0; r < num_result_triangles; ++r) {
     if (find(r) != r) continue;
     // A face the other operand left whole keeps its loop from its first corner, as in Blender
@@ -119,6 +121,9 @@ std::vector<Polygon> MergeTriangles(const Mesh& input, const Mesh& primitive, co
     const bool on_input = source_face[r] < input.NumFaces();
     const Polygon& source = on_input ? input.faces[source_face[r]] : primitive.faces[source_face[r] - input.NumFaces()];
     const Source::Kind kind = on_input ? Source::kInput : Source::kPrimitive;
+    const bool all_corners_kept = std::all_of(f.begin(), f.end(), [&](int v) {
+      return sources[v].kind == kind && std::count(source.begin(), source.end(), sources[v].vertex) == 1;
+    });
     if (f.size() == source.size()) {
       const auto first = std::find_if(f.begin(), f.end(), [&](int v) {
         return sources[v].kind == kind && sources[v].vertex == source[0];
@@ -126,8 +131,47 @@ std::vector<Polygon> MergeTriangles(const Mesh& input, const Mesh& primitive, co
       if (first != f.end()) std::rotate(f.begin(), first, f.end());
     }
     merged.push_back(f);
+    whole->push_back(f.size() == source.size() && all_corners_kept);
   }
   return merged;
+}
+
+std::vector<int> HoledInputFaces(const Mesh& input, const TriangleSoup& result, const std::vector<int>& source_face) {
+  const int num_vertices = static_cast<int>(result.vertices.size());
+  std::vector<std::vector<int>> triangles_of(input.NumFaces());
+  for (size_t r = 0; r < result.triangles.size(); ++r) {
+    if (source_face[r] < input.NumFaces()) triangles_of[source_face[r]].push_back(static_cast<int>(r));
+  }
+  std::vector<int> parent(num_vertices);
+  std::iota(parent.begin(), parent.end(), 0);
+  auto find = [&parent](int x) {
+    while (parent[x] != x) x = parent[x] = parent[parent[x]];
+    return x;
+  };
+  std::vector<int> holed;
+  for (int f = 0; f < input.NumFaces(); ++f) {
+    if (input.faces[f].size() < 4 || triangles_of[f].size() < 2) continue;
+    std::vector<int> vertices;
+    std::vector<long long> edges;
+    for (int r : triangles_of[f]) {
+      const auto& t = result.triangles[r];
+      for (int i = 0; i < 3; ++i) {
+        vertices.push_back(t[i]);
+        edges.push_back(EdgeKey(t[i], t[(i + 1) % 3]));
+        parent[find(t[i])] = find(t[(i + 1) % 3]);
+      }
+    }
+    std::sort(vertices.begin(), vertices.end());
+    vertices.erase(std::unique(vertices.begin(), vertices.end()), vertices.end());
+    std::sort(edges.begin(), edges.end());
+    const long long num_edges = std::unique(edges.begin(), edges.end()) - edges.begin();
+    long long pieces = 0;
+    for (int v : vertices) pieces += find(v) == v;
+    const long long euler = static_cast<long long>(vertices.size()) - num_edges + static_cast<long long>(triangles_of[f].size());
+    if (euler < pieces) holed.push_back(f);
+    for (int v : vertices) parent[v] = v;
+  }
+  return holed;
 }
 
 // The crossings to dissolve: those that only continue a straight chain between the same two

@@ -18,9 +18,16 @@ void RefuseCutNonPlanarFaces(const Mesh& input, const TriangleSoup& result, cons
 // retriangulation need not be Delaunay, and the merge depends on the triangles.
 void MakeDelaunay(const Operands& ops, const std::vector<int>& source_triangle, TriangleSoup* result);
 
-// The triangles of each source polygon merged back into polygons (ops/boolean.h).
+// The triangles of each source polygon merged back into polygons (ops/boolean.h); `whole[i]`:
+// merged polygon i is a source polygon the other operand left whole.
 std::vector<Polygon> MergeTriangles(const Mesh& input, const Mesh& primitive, const TriangleSoup& result,
-                                    const std::vector<int>& source_face, const std::vector<BooleanOp::Source>& sources);
+                                    const std::vector<int>& source_face, const std::vector<BooleanOp::Source>& sources,
+                                    std::vector<bool>* whole);
+
+// The input faces of 4 or more corners whose triangles in `result` enclose a hole (their Euler
+// characteristic below their count of pieces): Blender splits such a face along triangulation
+// edges, and its triangulation follows the face's loop start.
+std::vector<int> HoledInputFaces(const Mesh& input, const TriangleSoup& result, const std::vector<int>& source_face);
 
 // The crossings to dissolve: those that only continue a straight chain between the same two
 // polygons.

@@ -92,6 +92,11 @@ class Op {
   // `gate`: real Blender, on float32 coordinates, may take the other side (a replay guard,
   // ops/replay_guards.h).
   virtual bool NearGeometricBranch(double /*gate*/, const Positions<double>& /*in*/) const { return false; }
+  // Loop starts (each polygon's first corner), for a replay guard (ops/replay_guards.h): the
+  // output faces at `gate` whose loop start may differ from Blender's, and the input faces
+  // whose loop start decides this op's output topology.
+  virtual std::vector<int> FacesOfUnknownLoopStart(double /*gate*/) const { return {}; }
+  virtual std::vector<int> FacesWhoseLoopStartDecides(double /*gate*/) const { return {}; }
 
  protected:
   void AddParam(const std::string& name, double lower, double upper, double identity,

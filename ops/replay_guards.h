@@ -24,7 +24,16 @@ bool SubdividesTwoEdgeVertex(const Json& document, const std::vector<Mesh>& step
 // branch on its input's geometry within float32 noise of the switch (Op::NearGeometricBranch).
 bool NearGeometricBranch(const Sequence& evaluated, const std::vector<Mesh>& steps);
 
-// Any of the three above (at the default fraction), for `evaluated` after EvaluateSequence.
+// True when an op's output polygons change with the loop start of an input face (a Boolean
+// cutting a hole into a polygon: Op::FacesWhoseLoopStartDecides, then tried from each of the
+// face's corners) that an earlier op may have
+// started elsewhere than Blender does (Op::FacesOfUnknownLoopStart: a Boolean's cut faces, whose
+// loops Blender's merge starts by its own triangles' order). Through an op that changes the
+// topology, a face it keeps as it was (the same corners from the same first one) keeps its
+// standing, and its new faces are unknown when any input face was.
+bool HolesAFaceOfUnknownLoopStart(const Sequence& evaluated, const std::vector<Mesh>& steps);
+
+// Any of the four above (at the default fraction), for `evaluated` after EvaluateSequence.
 bool BreaksReplay(const Sequence& evaluated, const std::vector<Mesh>& steps);
 
 }  // namespace opgraph
