@@ -62,10 +62,13 @@ void BevelOp::Prepare(const Mesh& input) {
   std::vector<bool> beveled(topology->NumEdges(), false);
   std::vector<bool> touched(num_vertices, false);
   bool any = false;
+  prepare_angle_margin_ = prepare_dot_margin_ = 1e300;
   for (int e = 0; e < topology->NumEdges(); ++e) {
     const HalfedgeTopology::Corners faces = topology->EdgeCorners(e);
     if (faces.size() != 2) continue;
-    beveled[e] = !angle_limit_ || normals[faces[0].face].dot(normals[faces[1].face]) < threshold;
+    const double dot = normals[faces[0].face].dot(normals[faces[1].face]);
+    beveled[e] = !angle_limit_ || dot < threshold;
+    if (angle_limit_) prepare_dot_margin_ = std::min(prepare_dot_margin_, std::abs(dot - threshold));
     const auto [a, b] = topology->EdgeVertices(e);
     if (beveled[e]) touched[a] = touched[b] = any = true;
   }
@@ -129,12 +132,16 @@ void BevelOp::Prepare(const Mesh& input) {
     const Vec3d vno = vertex_normal(v, corners);
     auto on_plane = [&](int h) {
       const double dot = normals[bv.edges[h].fprev].dot(normals[bv.edges[h].fnext]);
+      prepare_dot_margin_ = std::min({prepare_dot_margin_, std::abs(std::abs(dot + 1) - bevel::kEpsilonBig),
+                                      std::abs(std::abs(dot - 1) - bevel::kEpsilonBig)});
       return std::abs(dot + 1) <= bevel::kEpsilonBig || std::abs(dot - 1) <= bevel::kEpsilonBig;
     };
     auto meets_edge = [&](int h1, int h2) {  // offset_meet_edge's success test
       const Vec3d d1 = (input.vertices[bv.edges[h1].other] - p).normalized();
       const Vec3d d2 = (input.vertices[bv.edges[h2].other] - p).normalized();
       const double ang = bevel::AngleNormalized<double>(d1, d2);
+      prepare_angle_margin_ = std::min({prepare_angle_margin_, std::abs(std::abs(ang) - bevel::kGoodAngle),
+                                        std::abs(std::abs(ang - kPi) - bevel::kGoodAngle)});
       if (std::abs(ang) < bevel::kGoodAngle) return false;
       if (d1.cross(d2).dot(vno) < 0) return false;
       return std::abs(ang - kPi) >= bevel::kGoodAngle;

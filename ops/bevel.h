@@ -5,8 +5,10 @@
 // limit_method NONE (every manifold edge) or ANGLE (edges whose faces' normals differ by more
 // than `angle_limit_deg`). The geometry follows bmesh_bevel.c: boundary vertices by offset_meet
 // / offset_on_edge_between (with the loop-slide width adjustment; a lone un-beveled edge between
-// two beveled ones is slid on unless it is within bevel::kGoodAngle = 1e-4 rad of collinear with
-// either, as in Blender 3.4), profiles, and vertex meshes
+// two beveled ones is slid on unless it is within bevel::kGoodAngle = 1e-3 rad of collinear with
+// either: real Blender 3.4 switches between 9.90e-4 and 1.003e-3, parity case
+// bevel_slide_within_good_angle; edges between that all lie in one plane are met as if there
+// were none, parity case bevel_table_bent_loops), profiles, and vertex meshes
 // (two beveled edges: welded profiles; three or more: the cube-corner octant map when Blender
 // uses it, else its cubic-subdivision vertex mesh; one segment: a polygon).
 //
@@ -48,7 +50,14 @@ class BevelOp : public OpBase<BevelOp> {
   bool CommutesWithTransform(bool rigid) const override { return rigid; }
 
   template <typename T>
-  void Apply(const T* p, const T& gate, const Positions<T>& in, Positions<T>* out) const;
+  void Apply(const T* p, const T& gate, const Positions<T>& in, Positions<T>* out) const {
+    ApplyNoting(p, gate, in, out, nullptr);
+  }
+  // Near a switch the input decides: a lone un-beveled edge's slide (bevel::kGoodAngle), an
+  // edge on a plane (bevel::kEpsilonBig), a profile's ends and middle in line
+  // (bevel::kEpsilonAng): the synthetic table whose profile sat 2.00001 degrees from in line
+  // rebuilt 3.6e-3 of the diagonal off, Blender's float32 bound vertices on the other side.
+  bool NearGeometricBranch(double gate, const Positions<double>& in) const override;
 
   // How a boundary vertex between beveled edges e and e2 is placed (decided on the input).
   enum class Meet : char { kAdjacent, kOnEdgeBetween, kBetweenNoFace, kBetweenFace, kSlide };
@@ -87,6 +96,10 @@ class BevelOp : public OpBase<BevelOp> {
   template <typename T>
   void Boundaries(const Positions<T>& in, const T& width, std::vector<std::vector<T>>* off_l,
                   std::vector<std::vector<Vec3<T>>>* bounds) const;
+  // Apply, lowering `*margin` (when given) to the distance of a profile's in-line test from its
+  // switch (radians).
+  template <typename T>
+  void ApplyNoting(const T* p, const T& gate, const Positions<T>& in, Positions<T>* out, double* margin) const;
   int Slot(const BevVert& bv, int i, int j, int k) const;
   int OutputId(const BevVert& bv, int i, int j, int k) const;
 
@@ -96,6 +109,10 @@ class BevelOp : public OpBase<BevelOp> {
   double angle_limit_deg_ = 30;
 
   bevel::ProfileSpacing spacing_{1};
+  // How close Prepare's tests on the input came to their switches: angles (radians) and the
+  // dot products of on-plane edges' face normals.
+  double prepare_angle_margin_ = 1e300;
+  double prepare_dot_margin_ = 1e300;
   bevel::VGrid<double> octant_{3, 2};
   std::vector<Polygon> input_faces_;
   std::vector<int> vertex_to_bev_;      // input vertex -> index in bev_verts_ or -1

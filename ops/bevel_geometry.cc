@@ -245,7 +245,9 @@ void BevelOp::Boundaries(const Positions<T>& in, const T& width, std::vector<std
       case Meet::kBetweenNoFace:
         return geo.OffsetMeet(bv, e, e2, -1, true, bnd.e_in_plane, off_r[b][e], off_l[b][e2], vno);
       case Meet::kBetweenFace:
-        return geo.OffsetMeet(bv, e, e2, bv.edges[e].fnext, true, bnd.e_in_plane, off_r[b][e], off_l[b][e2], vno);
+        // All the edges between lie in one plane: Blender 3.4 meets the offsets as if there
+        // were none (no drop onto a face), which on slightly bent faces is another point.
+        return geo.OffsetMeet(bv, e, e2, bv.edges[e].fnext, false, -1, off_r[b][e], off_l[b][e2], vno);
       case Meet::kSlide:
         return geo.SlideDist(bv, e, width);
       case Meet::kOnEdgeBetween:
@@ -331,8 +333,19 @@ void BevelOp::Boundaries(const Positions<T>& in, const T& width, std::vector<std
   }
 }
 
+bool BevelOp::NearGeometricBranch(double gate, const Positions<double>& in) const {
+  // Blender's float32 coordinates move these angles by about 1e-5 radians between vertices a
+  // bevel width apart (measured: a switch 5e-6 from ours held), normals' dot products by 1e-7.
+  constexpr double kAngleMargin = 1e-4, kDotMargin = 1e-6;
+  if (prepare_angle_margin_ < kAngleMargin || prepare_dot_margin_ < kDotMargin) return true;
+  double margin = 1e300;
+  Positions<double> out;
+  ApplyNoting(params_.data(), gate, in, &out, &margin);
+  return margin < kAngleMargin;
+}
+
 template <typename T>
-void BevelOp::Apply(const T* p, const T& gate, const Positions<T>& in, Positions<T>* out) const {
+void BevelOp::ApplyNoting(const T* p, const T& gate, const Positions<T>& in, Positions<T>* out, double* margin) const {
   out->assign(num_output_vertices_, bevel::Zero3<T>());
   for (size_t v = 0; v < in.size(); ++v) {
     if (kept_vertex_id_[v] >= 0) (*out)[kept_vertex_id_[v]] = in[v];
@@ -371,14 +384,14 @@ void BevelOp::Apply(const T* p, const T& gate, const Positions<T>& in, Positions
       if (bevel::IsectLineLine(v, in[bv.edges[h].other], start, end, &pro.middle, &other_point) == 0) pro.middle = v;
       V3<T> d1 = SafeNormalized<T>(pro.middle - start), d2 = SafeNormalized<T>(pro.middle - end);
       pro.plane_no = SafeNormalized<T>(d1.cross(d2));
-      if (bevel::NearlyParallel(d1, d2)) {
+      if (bevel::NearlyParallel(d1, d2, margin)) {
         pro.middle = v;
         const EdgeHalf& eprev = bv.edges[(h + ne - 1) % ne];
         const EdgeHalf& enext = bv.edges[(h + 1) % ne];
         if (eprev.beveled && enext.beveled && bv.selcount >= 3) {
           const V3<T> d3 = SafeNormalized<T>(in[eprev.other] - v), d4 = SafeNormalized<T>(in[enext.other] - v);
           V3<T> meet, meet2;
-          if (bevel::NearlyParallel(d3, d4) || bevel::IsectLineLine<T>(start, start + d3, end, end + d4, &meet, &meet2) == 0) {
+          if (bevel::NearlyParallel(d3, d4, margin) || bevel::IsectLineLine<T>(start, start + d3, end, end + d4, &meet, &meet2) == 0) {
             linear = true;
           } else {
             pro.middle = meet;
@@ -387,7 +400,7 @@ void BevelOp::Apply(const T* p, const T& gate, const Positions<T>& in, Positions
         d1 = SafeNormalized<T>(pro.middle - start);
         d2 = SafeNormalized<T>(pro.middle - end);
         pro.plane_no = SafeNormalized<T>(d1.cross(d2));
-        if (bevel::NearlyParallel(d1, d2)) {
+        if (bevel::NearlyParallel(d1, d2, margin)) {
           linear = true;
         } else {
           pro.proj_dir = pro.plane_no;
@@ -530,8 +543,9 @@ void BevelOp::Apply(const T* p, const T& gate, const Positions<T>& in, Positions
   }
 }
 
-template void BevelOp::Apply<double>(const double*, const double&, const Positions<double>&,
-                                     Positions<double>*) const;
-template void BevelOp::Apply<JetT>(const JetT*, const JetT&, const Positions<JetT>&, Positions<JetT>*) const;
+template void BevelOp::ApplyNoting<double>(const double*, const double&, const Positions<double>&,
+                                           Positions<double>*, double*) const;
+template void BevelOp::ApplyNoting<JetT>(const JetT*, const JetT&, const Positions<JetT>&, Positions<JetT>*,
+                                         double*) const;
 
 }  // namespace opgraph

@@ -20,7 +20,7 @@ constexpr double kEpsilon = 1e-6;
 constexpr double kEpsilonBig = 1e-4;
 constexpr double kEpsilonAng = 2.0 * kPi / 180.0;   // BEVEL_EPSILON_ANG
 constexpr double kSmallAng = 10.0 * kPi / 180.0;    // BEVEL_SMALL_ANG
-constexpr double kGoodAngle = 0.0001;               // Blender 3.4's BEVEL_GOOD_ANGLE (older: 0.25, newer: 0.1)
+constexpr double kGoodAngle = 0.001;  // where real Blender 3.4 switches (measured; ops/bevel.h)
 
 template <typename T>
 using V3 = Vec3<T>;
@@ -52,9 +52,13 @@ T Angle(const V3<T>& a, const V3<T>& b) {
   return AngleNormalized<T>(SafeNormalized(a), SafeNormalized(b));
 }
 
+// `margin` (when given) is lowered to how far the angle is from either switch.
 template <typename T>
-bool NearlyParallel(const V3<T>& d1, const V3<T>& d2) {
+bool NearlyParallel(const V3<T>& d1, const V3<T>& d2, double* margin = nullptr) {
   const double ang = Scalar(Angle(d1, d2));
+  if (margin != nullptr) {
+    *margin = std::min({*margin, std::abs(std::abs(ang) - kEpsilonAng), std::abs(std::abs(ang - kPi) - kEpsilonAng)});
+  }
   return std::abs(ang) < kEpsilonAng || std::abs(ang - kPi) < kEpsilonAng;
 }
 
