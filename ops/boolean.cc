@@ -157,6 +157,14 @@ const std::vector<Polygon>& BooleanOp::OutputFaces(double gate) const {
   return gate < kGateSwitch ? input_faces_ : output_faces_;
 }
 
+bool BooleanOp::NearGeometricBranch(double gate, const Positions<double>& in) const {
+  if (gate < kGateSwitch) return false;
+  Mesh input;
+  input.vertices = in;
+  input.faces = input_faces_;
+  return HasFoldedFace(input, Triangulate(input));
+}
+
 std::vector<int> BooleanOp::FacesOfUnknownLoopStart(double gate) const {
   return gate < kGateSwitch ? std::vector<int>() : cut_faces_;
 }

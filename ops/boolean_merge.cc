@@ -52,6 +52,33 @@ void RefuseCutNonPlanarFaces(const Mesh& input, const TriangleSoup& result, cons
   }
 }
 
+bool HasFoldedFace(const Mesh& input, const std::vector<SourceTriangle>& input_triangles) {
+  auto normal = [&input](int a, int b, int c) {
+    const Vec3d& p = input.vertices[a];
+    return (input.vertices[b] - p).cross(input.vertices[c] - p).normalized();
+  };
+  auto folded = [](const Vec3d& n1, const Vec3d& n2) { return n1.dot(n2) <= 1e-6; };  // false on NaN
+  // A quad along either diagonal (which one Blender takes follows its loop start).
+  for (const Polygon& f : input.faces) {
+    if (f.size() != 4) continue;
+    if (folded(normal(f[0], f[1], f[2]), normal(f[0], f[2], f[3])) ||
+        folded(normal(f[1], f[2], f[3]), normal(f[1], f[3], f[0]))) {
+      return true;
+    }
+  }
+  std::vector<Vec3d> first_normal(input.NumFaces(), Vec3d::Zero());
+  for (const SourceTriangle& t : input_triangles) {
+    if (input.faces[t.face].size() == 4) continue;
+    const Vec3d n = normal(t.corners[0], t.corners[1], t.corners[2]);
+    if (first_normal[t.face].isZero()) {
+      first_normal[t.face] = n;
+    } else if (folded(first_normal[t.face], n)) {
+      return true;
+    }
+  }
+  return false;
+}
+
 // Blender retriangulates each operand triangle with a constrained Delaunay triangulation; CGAL's
 // retriangulation need not be Delaunay, and the merge depends on the triangles.
 void MakeDelaunay(const Operands& ops, const std::vector<int>& source_triangle, TriangleSoup* result) {

@@ -14,6 +14,12 @@ namespace opgraph {
 void RefuseCutNonPlanarFaces(const Mesh& input, const TriangleSoup& result, const std::vector<int>& source_face,
                              const std::vector<BooleanOp::Source>& sources);
 
+// Whether an input polygon's triangles fold past a right angle against its first (a quad: along
+// either diagonal; a larger polygon: as the boolean triangulates it): Blender's merge joins only
+// triangles facing the first one's way, so it splits such a polygon, cut or not, along the
+// diagonal its loop start gives.
+bool HasFoldedFace(const Mesh& input, const std::vector<SourceTriangle>& input_triangles);
+
 // Blender retriangulates each operand triangle with a constrained Delaunay triangulation; CGAL's
 // retriangulation need not be Delaunay, and the merge depends on the triangles.
 void MakeDelaunay(const Operands& ops, const std::vector<int>& source_triangle, TriangleSoup* result);

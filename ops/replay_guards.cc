@@ -115,16 +115,18 @@ bool HolesAFaceOfUnknownLoopStart(const Sequence& evaluated, const std::vector<M
     }
     const std::vector<Polygon>& input = input_mesh.faces;
     const std::vector<Polygon>& output = op.OutputFaces(gate);
+    const bool any_unknown = std::find(unknown.begin(), unknown.end(), true) != unknown.end();
     std::vector<bool> next;
-    if (output == input) {
+    if (!any_unknown) {
+      next.assign(output.size(), false);
+    } else if (output == input) {
       next = unknown;
     } else {
-      const bool any_unknown = std::find(unknown.begin(), unknown.end(), true) != unknown.end();
       std::map<Polygon, int> input_index;
       for (size_t f = 0; f < input.size(); ++f) input_index.emplace(input[f], static_cast<int>(f));
       for (const Polygon& face : output) {
         const auto kept = input_index.find(face);
-        next.push_back(kept == input_index.end() ? any_unknown : static_cast<bool>(unknown[kept->second]));
+        next.push_back(kept == input_index.end() || unknown[kept->second]);
       }
     }
     for (int f : op.FacesOfUnknownLoopStart(gate)) next[f] = true;

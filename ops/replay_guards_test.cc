@@ -86,6 +86,8 @@ TEST(ReplayGuards, AHoleInAFaceAnEarlierBooleanCutBreaksReplay) {
   // diagonal): the +X face's loop start after the cut is Blender merge's own, which decides how
   // its triangulation, and so the hole's bridges, run.
   const Evaluated cut_then_hole = Evaluate(HoleAfterACut(+1, true));
+  EXPECT_TRUE(cut_then_hole.sequence.ops[1]->FacesWhoseLoopStartDecides(1).empty());  // cut through, no hole
+  EXPECT_FALSE(cut_then_hole.sequence.ops[1]->FacesOfUnknownLoopStart(1).empty());
   EXPECT_FALSE(cut_then_hole.sequence.ops[2]->FacesWhoseLoopStartDecides(1).empty());
   EXPECT_TRUE(HolesAFaceOfUnknownLoopStart(cut_then_hole.sequence, cut_then_hole.steps));
   EXPECT_TRUE(BreaksReplay(cut_then_hole.sequence, cut_then_hole.steps));
@@ -127,6 +129,29 @@ TEST(ReplayGuards, ABevelProfileAtItsInLineSwitchBreaksReplay) {
   }
   const Evaluated clear = Evaluate(bent_less);
   EXPECT_FALSE(NearGeometricBranch(clear.sequence, clear.steps));
+}
+
+TEST(ReplayGuards, ABooleanOnAFaceFoldedPastARightAngleBreaksReplay) {
+  // A cap turned 42 degrees about two axes folds side quads past a right angle; Blender's merge
+  // keeps such a quad as two triangles split along the diagonal its loop start gives (real
+  // Blender: 17 faces against 16, 6.1e-2 of the diagonal apart). Turned 20 degrees, none folds.
+  auto cap_then_notch = [](double tilt_deg) {
+    build::ExtrudeArgs extrude;
+    extrude.faces.normals = {Vec3d(0, -1, 0)};
+    extrude.faces.expect = 1;
+    extrude.height = 0.37;
+    extrude.width = 0.62;
+    extrude.tilt_deg[0] = extrude.tilt_deg[1] = tilt_deg;
+    build::BooleanArgs notch;
+    notch.difference = true;
+    notch.size = Vec3d(0.5, 0.5, 0.5);
+    notch.location = Vec3d(0, 1, 0);
+    return build::Document({build::Extrude(extrude), build::Boolean(notch)});
+  };
+  const Evaluated folded = Evaluate(cap_then_notch(42.3));
+  EXPECT_TRUE(NearGeometricBranch(folded.sequence, folded.steps));
+  const Evaluated straight = Evaluate(cap_then_notch(20));
+  EXPECT_FALSE(NearGeometricBranch(straight.sequence, straight.steps));
 }
 
 }  // namespace
