@@ -24,6 +24,13 @@ double OffPlane(const Positions<double>& vertices, const Polygon& face) {
   return off;
 }
 
+// The root of x in the union-find forest `parent`, halving the path on the way.
+int FindRoot(std::vector<int>* parent, int x) {
+  std::vector<int>& p = *parent;
+  while (p[x] != x) x = p[x] = p[p[x]];
+  return x;
+}
+
 }  // namespace
 
 // A cut non-planar input polygon: which diagonal Blender's triangulation takes follows its
@@ -105,10 +112,7 @@ std::vector<Polygon> MergeTriangles(const Mesh& input, const Mesh& primitive, co
     polygons[r].assign(result.triangles[r].begin(), result.triangles[r].end());
     parent[r] = r;
   }
-  auto find = [&parent](int x) {
-    while (parent[x] != x) x = parent[x] = parent[parent[x]];
-    return x;
-  };
+  auto find = [&parent](int x) { return FindRoot(&parent, x); };
   struct Candidate {
     double length_squared;
     int from, to;  // directed edge of triangle `left`
@@ -171,10 +175,7 @@ std::vector<int> HoledInputFaces(const Mesh& input, const TriangleSoup& result, 
   }
   std::vector<int> parent(num_vertices);
   std::iota(parent.begin(), parent.end(), 0);
-  auto find = [&parent](int x) {
-    while (parent[x] != x) x = parent[x] = parent[parent[x]];
-    return x;
-  };
+  auto find = [&parent](int x) { return FindRoot(&parent, x); };
   std::vector<int> holed;
   for (int f = 0; f < input.NumFaces(); ++f) {
     if (input.faces[f].size() < 4 || triangles_of[f].size() < 2) continue;
