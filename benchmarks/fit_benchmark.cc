@@ -1,5 +1,4 @@
-// Levenberg-Marquardt (our dense normal-equations path, with and without Anderson acceleration
-// of the correspondence loop, and Ceres' solver) vs Adam over the
+// Levenberg-Marquardt (our dense normal-equations path, and Ceres' solver) vs Adam over the
 // same objective and gradients, side by side:
 // per gt-dev model the engine reproduces, its ground-truth skeleton with every parameter
 // perturbed (as the recovery test), fitted to the Blender-built model.obj by both. Then the
@@ -34,21 +33,17 @@ double Now() {
   return std::chrono::duration<double>(std::chrono::steady_clock::now().time_since_epoch()).count();
 }
 
-// The optimizers compared: the fitter's LM with and without Anderson acceleration of its
-// correspondence loop (solver/anderson.h), Ceres' LM, and Adam as the paper runs it (plain).
-struct Contender {
-  const char* label;
-  Optimizer optimizer;
-  int anderson_history;
-};
-constexpr Contender kContenders[] = {
-    {"LM (dense normal equations)", Optimizer::kLm, 0},
-    {"LM + Anderson (4)", Optimizer::kLm, 4},
-    {"LM + Anderson (1)", Optimizer::kLm, 1},
-    {"Ceres LM (dense QR)", Optimizer::kCeres, 0},
-    {"Adam", Optimizer::kAdam, 0},
-};
-constexpr int kNumLm = 4;  // the first three are compared with Adam (the last)
+const char* OptimizerLabel(Optimizer optimizer) {
+  switch (optimizer) {
+    case Optimizer::kLm:
+      return "LM (dense normal equations)";
+    case Optimizer::kCeres:
+      return "Ceres LM (dense QR)";
+    case Optimizer::kAdam:
+      break;
+  }
+  return "Adam";
+}
 
 struct Run {
   FitSummary summary;
@@ -80,7 +75,7 @@ void CompareOptimizers(const fs::path& root) {
   int index = 0;
   // Per model and LM path: Adam's time to 1 % over LM's (Adam's total time when it never gets
   // there: a lower bound; 0 when LM does not).
-  std::vector<std::vector<double>> speedups(kNumLm);
+  std::vector<std::vector<double>> speedups(2);
   for (const fs::path& model : models) {
     std::string why_not;
     const Json converted = ConvertGtSequence(model / "sequence.json", &why_not);
@@ -90,24 +85,22 @@ void CompareOptimizers(const fs::path& root) {
     const std::unique_ptr<Target> target = LoadTarget((model / "model.obj").string(), target_options);
     std::vector<Run> runs;
     int num_params = 0;
-    for (const Contender& contender : kContenders) {
+    for (Optimizer optimizer : {Optimizer::kLm, Optimizer::kCeres, Optimizer::kAdam}) {
       Sequence sequence = ParseSequence(converted);
       FitterOptions options;
-      options.optimizer = contender.optimizer;
-      options.anderson_history = contender.anderson_history;
+      options.optimizer = optimizer;
       Fitter fitter(*target, &sequence, options);
       num_params = PerturbParameters(fitter.program(), sequence, 1000 + index);
-      runs.push_back({fitter.Fit(), contender.label});
+      runs.push_back({fitter.Fit(), OptimizerLabel(optimizer)});
     }
     double best = std::numeric_limits<double>::infinity();
     for (const Run& run : runs) {
       for (const FitSummary::Point& p : run.summary.history) best = std::min(best, p.loss);
     }
-    const FitSummary& adam_run = runs[kNumLm].summary;
-    const FitSummary::Point* adam = Reached(adam_run, best);
-    for (int lm = 0; lm < kNumLm; ++lm) {
+    const FitSummary::Point* adam = Reached(runs[2].summary, best);
+    for (int lm = 0; lm < 2; ++lm) {
       const FitSummary::Point* reached = Reached(runs[lm].summary, best);
-      speedups[lm].push_back(!reached ? 0 : (adam ? adam->seconds : adam_run.seconds) / reached->seconds);
+      speedups[lm].push_back(!reached ? 0 : (adam ? adam->seconds : runs[2].summary.seconds) / reached->seconds);
     }
     for (const Run& run : runs) {
       const FitSummary::Point* reached = Reached(run.summary, best);
@@ -125,13 +118,13 @@ void CompareOptimizers(const fs::path& root) {
   std::printf("\nMedian over the %zu models of Adam's time to 1 %% over LM's (Adam's total time where it never gets "
               "there, 0 where LM does not):\n\n| LM path | median speed-up over Adam |\n|---|---|\n",
               speedups[0].size());
-  for (int lm = 0; lm < kNumLm; ++lm) {
+  for (int lm = 0; lm < 2; ++lm) {
     std::vector<double> values = speedups[lm];
     if (values.empty()) continue;
     std::sort(values.begin(), values.end());
     const size_t half = values.size() / 2;
     const double median = values.size() % 2 ? values[half] : 0.5 * (values[half - 1] + values[half]);
-    std::printf("| %s | %.1fx |\n", kContenders[lm].label, median);
+    std::printf("| %s | %.1fx |\n", OptimizerLabel(lm == 0 ? Optimizer::kLm : Optimizer::kCeres), median);
   }
 }
 

@@ -12,7 +12,6 @@
 #include <ostream>
 #include <stdexcept>
 
-#include "solver/anderson.h"
 #include "solver/build_fit_objective.h"
 #include "solver/fit_correspondences.h"
 #include "solver/fitter_solvers.h"
@@ -33,7 +32,6 @@ std::string FitterOptions::Check() const {
   if (!(adam_learning_rate > 0)) return "adam_learning_rate must be > 0";
   if (!(initial_trust_region_radius > 0)) return "initial_trust_region_radius must be > 0";
   if (!(min_relative_improvement >= 0)) return "min_relative_improvement must be >= 0";
-  if (anderson_history < 0 || anderson_history > 20) return "anderson_history must be in [0, 20]";
   if (num_threads < 1) return "num_threads must be >= 1";
   if (!(max_seconds >= 0)) return "max_seconds must be >= 0";
   for (const ParameterRangeRule& rule : domain_rules) {
@@ -266,48 +264,27 @@ double Fitter::RunStage(double sparsity_weight, FitSummary* summary) {
       for (int i = 0; i < b.size; ++i) b.data[i] = values[k++];
     }
   };
-  auto clamp_to_bounds = [&]() {
-    for (const ProgramBlock& b : program_->blocks()) {
-      if (!b.holds_op_params()) continue;
-      const std::vector<ParamSpec>& specs = sequence_->ops[b.op]->specs();
-      for (int i = 0; i < b.size; ++i) b.data[i] = std::min(specs[i].upper, std::max(specs[i].lower, b.data[i]));
-    }
-  };
-  clamp_to_bounds();  // start inside the bounds (Ceres needs a feasible start)
-  // The loss with correspondences made afresh at the current parameters.
-  auto fresh_loss = [&](bool* reproducible, FitCorrespondences* correspondences, Objective* objective) {
-    // Discrete choices that depend on the parameters (a Boolean's intersection, the elements a
-    // target selects) are re-resolved at each update; where the sequence no longer evaluates,
-    // the last topology is kept and the point cannot be the result.
-    *reproducible = ResolveTopology();
-    // The same seed every update: samples move smoothly with the shape, so losses compare.
-    BuildCorrespondences(options_.seed, correspondences);
-    MakeObjective(*correspondences, objective);
-    program_->PrepareForEvaluation(false, true);
-    return EvaluateObjective(*program_, *objective, nullptr, scratch_.get());
-  };
-  auto as_vector = [](const std::vector<double>& v) { return Eigen::Map<const Eigen::VectorXd>(v.data(), v.size()); };
-  AndersonAcceleration anderson(options_.anderson_history);
-  std::vector<double> plain_image;  // the last solve's result, when the start was extrapolated
-  double previous_fresh = std::numeric_limits<double>::infinity();
+  // Start inside the bounds (Ceres needs a feasible start).
+  for (const ProgramBlock& b : program_->blocks()) {
+    if (!b.holds_op_params()) continue;
+    const std::vector<ParamSpec>& specs = sequence_->ops[b.op]->specs();
+    for (int i = 0; i < b.size; ++i) b.data[i] = std::min(specs[i].upper, std::max(specs[i].lower, b.data[i]));
+  }
   double best = std::numeric_limits<double>::infinity(), best_reproducible = best;
   std::vector<double> best_values = snapshot(), best_reproducible_values;
   for (int update = 0; update < options_.max_outer_iterations; ++update) {
     const double started = Now();
-    bool reproducible = false;
+    // Discrete choices that depend on the parameters (a Boolean's intersection, the elements a
+    // target selects) are re-resolved at each update; where the sequence no longer evaluates,
+    // the last topology is kept and the point cannot be the result.
+    const bool reproducible = ResolveTopology();
     FitCorrespondences correspondences;
+    // The same seed every update: samples move smoothly with the shape, so losses compare.
+    BuildCorrespondences(options_.seed, &correspondences);
     Objective objective;
-    double fresh = fresh_loss(&reproducible, &correspondences, &objective);
-    if (!plain_image.empty() && !(fresh < previous_fresh)) {
-      // The extrapolated start did not lower the loss: take the solve's own result.
-      restore(plain_image);
-      anderson.Clear();
-      correspondences = FitCorrespondences();
-      objective = Objective();
-      fresh = fresh_loss(&reproducible, &correspondences, &objective);
-    }
-    plain_image.clear();
-    previous_fresh = fresh;
+    MakeObjective(correspondences, &objective);
+    program_->PrepareForEvaluation(false, true);
+    const double fresh = EvaluateObjective(*program_, objective, nullptr, scratch_.get());
     summary->history.push_back({Now() - start_time_, summary->inner_iterations, fresh});
     const bool improving = fresh < best * (1 - options_.min_relative_improvement);
     if (fresh < best) {
@@ -323,15 +300,7 @@ double Fitter::RunStage(double sparsity_weight, FitSummary* summary) {
     }
     if (!improving || deadline_.Passed()) break;
     const int iterations_before = summary->inner_iterations;
-    const std::vector<double> solve_start = snapshot();
     const double solved = Solve(correspondences, sparsity_weight, summary);
-    Eigen::VectorXd extrapolated;
-    const std::vector<double> image = snapshot();
-    if (anderson.Step(as_vector(solve_start), as_vector(image), &extrapolated)) {
-      restore(std::vector<double>(extrapolated.data(), extrapolated.data() + extrapolated.size()));
-      clamp_to_bounds();
-      plain_image = image;
-    }
     ++summary->outer_iterations;
     if (options_.progress) {
       char line[200];

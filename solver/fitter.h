@@ -71,9 +71,6 @@ struct FitterOptions {
   int adam_iterations = 150;        // Adam steps per solve
   double adam_learning_rate = 0.01;
   double min_relative_improvement = 1e-3;  // outer loop stops below this
-  // Anderson acceleration of the correspondence loop (solver/anderson.h): the number of earlier
-  // updates the next start is extrapolated from; 0 turns it off.
-  int anderson_history = 4;
   int num_threads = 1;
   uint64_t seed = 1;
   std::vector<ParameterRangeRule> domain_rules;
