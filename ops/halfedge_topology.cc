@@ -3,8 +3,9 @@
 #include <OpenMesh/Core/System/omstream.hh>
 
 #include <algorithm>
-#include <deque>
 #include <mutex>
+
+#include "ops/face_list_cache.h"
 
 namespace opgraph {
 
@@ -30,26 +31,8 @@ bool RepeatsAVertex(const Face& face) {
 }  // namespace
 
 std::shared_ptr<const HalfedgeTopology> HalfedgeTopology::Of(const Mesh& mesh) {
-  struct Entry {
-    int num_vertices;
-    std::vector<Polygon> faces;
-    std::shared_ptr<const HalfedgeTopology> topology;
-  };
-  static std::mutex mutex;
-  static std::deque<Entry> cache;  // most recent first
-  {
-    // A plain comparison, no hash: a hit reads the face list once (a hash would read it again),
-    // and a miss mostly stops at the first differing face, then costs a build anyway.
-    std::lock_guard<std::mutex> lock(mutex);
-    for (const Entry& entry : cache) {
-      if (entry.num_vertices == mesh.NumVertices() && entry.faces == mesh.faces) return entry.topology;
-    }
-  }
-  auto topology = std::make_shared<const HalfedgeTopology>(mesh.faces, mesh.NumVertices());
-  std::lock_guard<std::mutex> lock(mutex);
-  cache.push_front({mesh.NumVertices(), mesh.faces, topology});
-  if (cache.size() > kCached) cache.pop_back();
-  return topology;
+  static FaceListCache<HalfedgeTopology> cache(kCached);
+  return cache.Get(mesh, /*key=*/0, [&] { return std::make_shared<const HalfedgeTopology>(mesh.faces, mesh.NumVertices()); });
 }
 
 HalfedgeTopology::HalfedgeTopology(const std::vector<Polygon>& faces, int num_vertices)

@@ -1,11 +1,15 @@
 #include "ops/subdivision.h"
 
+#include "ops/face_list_cache.h"
+
 #include <opensubdiv/far/primvarRefiner.h>
 #include <opensubdiv/far/topologyDescriptor.h>
 #include <opensubdiv/far/topologyRefinerFactory.h>
 
+#include <algorithm>
 #include <map>
 #include <memory>
+#include <utility>
 
 namespace opgraph {
 namespace {
@@ -17,13 +21,34 @@ using OpenSubdiv::Far::TopologyRefinerFactory;
 namespace Sdc = OpenSubdiv::Sdc;
 
 // A primvar that is a sparse combination of the input vertices, so that running OpenSubdiv's
-// own interpolation on it yields the exact refinement weights.
+// own interpolation on it yields the exact refinement weights. Contributions are appended and
+// merged when the weights are read (Compact), not kept in a map, which allocates a node per
+// term; merged in the order they were added and read in index order, they sum exactly as a map
+// would. OpenSubdiv reads some weights of a level while it builds that level (edge points from
+// face points), hence the lazy merge.
 struct SparseWeights {
-  std::map<int, double> terms;
-  void Clear(void* = nullptr) { terms.clear(); }
+  void Clear(void* = nullptr) { terms.clear(), compact = true; }
   void AddWithWeight(const SparseWeights& src, double weight) {
-    for (const auto& term : src.terms) terms[term.first] += weight * term.second;
+    src.Compact();
+    for (const auto& term : src.terms) terms.emplace_back(term.first, weight * term.second);
+    compact = false;
   }
+  void Compact() const {
+    if (compact) return;
+    std::stable_sort(terms.begin(), terms.end(), [](const auto& a, const auto& b) { return a.first < b.first; });
+    size_t kept = 0;
+    for (size_t i = 0; i < terms.size(); ++i) {
+      if (kept > 0 && terms[kept - 1].first == terms[i].first) {
+        terms[kept - 1].second += terms[i].second;
+      } else {
+        terms[kept++] = terms[i];
+      }
+    }
+    terms.resize(kept);
+    compact = true;
+  }
+  mutable std::vector<std::pair<int, double>> terms;  // once compact: by index, each index once
+  mutable bool compact = true;
 };
 
 std::unique_ptr<TopologyRefiner> RefineUniformly(const Mesh& input, Sdc::SchemeType scheme, int levels) {
@@ -54,16 +79,18 @@ std::unique_ptr<TopologyRefiner> RefineUniformly(const Mesh& input, Sdc::SchemeT
 // Weights of the last level's vertices (pushed to the limit when `limit`) on the input vertices.
 std::vector<SparseWeights> RefinementWeights(const TopologyRefiner& refiner, int num_inputs, bool limit) {
   std::vector<SparseWeights> current(num_inputs);
-  for (int v = 0; v < num_inputs; ++v) current[v].terms[v] = 1.0;
+  for (int v = 0; v < num_inputs; ++v) current[v].terms = {{v, 1.0}};
   const PrimvarRefinerReal<double> primvar(refiner);
   for (int level = 1; level <= refiner.GetMaxLevel(); ++level) {
     std::vector<SparseWeights> next(refiner.GetLevel(level).GetNumVertices());
     primvar.Interpolate(level, current, next);
+    for (SparseWeights& weights : next) weights.Compact();
     current = std::move(next);
   }
   if (!limit) return current;
   std::vector<SparseWeights> limited(current.size());
   primvar.Limit(current, limited);
+  for (SparseWeights& weights : limited) weights.Compact();
   return limited;
 }
 
@@ -91,45 +118,56 @@ void SubdivisionOp::Prepare(const Mesh& input) {
   for (const Polygon& face : input.faces) corners += static_cast<int64_t>(face.size());
   PredictOutputFaces(&faces, &corners);
   CheckOutputFaces("levels", faces);
-  num_input_vertices_ = input.NumVertices();
-  const std::unique_ptr<TopologyRefiner> catmark = RefineUniformly(input, Sdc::SCHEME_CATMARK, levels_);
-  const std::unique_ptr<TopologyRefiner> bilinear = RefineUniformly(input, Sdc::SCHEME_BILINEAR, levels_);
-  const auto& last = catmark->GetLevel(levels_);
-  const auto& last_bilinear = bilinear->GetLevel(levels_);
+  // Thread-safe and shared: the refinement depends on the faces and the level only.
+  static FaceListCache<Refinement> cache(8);
+  refinement_ = cache.Get(input, levels_, [&] { return Refine(input, levels_); });
+  output_faces_ = refinement_->faces;
+  num_output_vertices_ = refinement_->num_vertices;
+}
+
+std::shared_ptr<const SubdivisionOp::Refinement> SubdivisionOp::Refine(const Mesh& input, int levels) {
+  const std::unique_ptr<TopologyRefiner> catmark = RefineUniformly(input, Sdc::SCHEME_CATMARK, levels);
+  const std::unique_ptr<TopologyRefiner> bilinear = RefineUniformly(input, Sdc::SCHEME_BILINEAR, levels);
+  const auto& last = catmark->GetLevel(levels);
+  const auto& last_bilinear = bilinear->GetLevel(levels);
+  auto refinement = std::make_shared<Refinement>();
   // Both schemes split every face into quads in the same order; check it rather than assume.
   bool same = last.GetNumVertices() == last_bilinear.GetNumVertices() &&
               last.GetNumFaces() == last_bilinear.GetNumFaces();
-  output_faces_.assign(last.GetNumFaces(), Polygon());
+  refinement->faces.assign(last.GetNumFaces(), Polygon());
   for (int f = 0; same && f < last.GetNumFaces(); ++f) {
     const auto verts = last.GetFaceVertices(f);
     const auto verts_bilinear = last_bilinear.GetFaceVertices(f);
     same = verts.size() == verts_bilinear.size();
     for (int k = 0; same && k < verts.size(); ++k) {
       same = verts[k] == verts_bilinear[k];
-      output_faces_[f].push_back(verts[k]);
+      refinement->faces[f].push_back(verts[k]);
     }
   }
   if (!same) throw FieldError("levels", "internal: bilinear and Catmull-Clark refinements differ");
-  num_output_vertices_ = last.GetNumVertices();
+  refinement->num_vertices = last.GetNumVertices();
 
-  const std::vector<SparseWeights> limit = RefinementWeights(*catmark, num_input_vertices_, true);
-  const std::vector<SparseWeights> linear = RefinementWeights(*bilinear, num_input_vertices_, false);
-  rows_.assign(num_output_vertices_, {});
-  for (int i = 0; i < num_output_vertices_; ++i) {
+  const std::vector<SparseWeights> limit = RefinementWeights(*catmark, input.NumVertices(), true);
+  const std::vector<SparseWeights> linear = RefinementWeights(*bilinear, input.NumVertices(), false);
+  refinement->rows.assign(refinement->num_vertices, {});
+  for (int i = 0; i < refinement->num_vertices; ++i) {
     std::map<int, std::pair<double, double>> merged;
     for (const auto& term : linear[i].terms) merged[term.first].first += term.second;
     for (const auto& term : limit[i].terms) merged[term.first].second += term.second;
-    for (const auto& term : merged) rows_[i].push_back({term.first, term.second.first, term.second.second});
+    for (const auto& term : merged) refinement->rows[i].push_back({term.first, term.second.first, term.second.second});
   }
+  return refinement;
 }
 
 template <typename T>
 void SubdivisionOp::Apply(const T* p, const T& gate, const Positions<T>& in, Positions<T>* out) const {
   const T t = gate * p[0];
-  out->assign(rows_.size(), Vec3<T>::Zero());
-  for (size_t i = 0; i < rows_.size(); ++i) {
+  if (!refinement_) return out->clear();  // not prepared: no output vertices
+  const std::vector<std::vector<Term>>& rows = refinement_->rows;
+  out->assign(rows.size(), Vec3<T>::Zero());
+  for (size_t i = 0; i < rows.size(); ++i) {
     Vec3<T> linear = Vec3<T>::Zero(), delta = Vec3<T>::Zero();
-    for (const Term& term : rows_[i]) {
+    for (const Term& term : rows[i]) {
       linear += term.bilinear * in[term.index];
       delta += (term.limit - term.bilinear) * in[term.index];
     }

@@ -12,6 +12,8 @@
 // Blender: a SUBSURF modifier with the settings above, levels = render_levels = N.
 #pragma once
 
+#include <memory>
+
 #include "ops/op.h"
 
 namespace opgraph {
@@ -39,10 +41,16 @@ class SubdivisionOp : public OpBase<SubdivisionOp> {
     double bilinear;
     double limit;
   };
+  // What Prepare computes from the input's faces alone (shared through a FaceListCache).
+  struct Refinement {
+    std::vector<Polygon> faces;
+    int num_vertices = 0;
+    std::vector<std::vector<Term>> rows;  // #out
+  };
+  static std::shared_ptr<const Refinement> Refine(const Mesh& input, int levels);
 
   int levels_ = 1;
-  int num_input_vertices_ = 0;
-  std::vector<std::vector<Term>> rows_;  // #out
+  std::shared_ptr<const Refinement> refinement_;
 };
 
 }  // namespace opgraph
