@@ -2,6 +2,8 @@
 
 #include <algorithm>
 #include <cmath>
+#include <future>
+#include <mutex>
 #include <cstdio>
 #include <cstdlib>
 #include <ostream>
@@ -115,14 +117,44 @@ void Evaluator::Prefetch(const std::vector<Layout>& layouts, FitPrecision precis
     if (j == 0) {
       if (meanwhile) meanwhile();
     } else {
-      outcomes[j - 1] = FitUncached(*jobs[j - 1], precision);
+      outcomes[j - 1] = FitOnce(keys[j - 1], *jobs[j - 1], precision);
     }
   });
   ReturnThreads(borrowed);
   for (size_t j = 0; j < jobs.size(); ++j) prefetched_.emplace(std::move(keys[j]), std::move(outcomes[j]));
 }
 
+struct Evaluator::SharedFits {
+  std::mutex mutex;
+  std::map<std::string, std::shared_future<Outcome>> fits;
+};
+
+Evaluator::Outcome Evaluator::FitOnce(const std::string& key, const Layout& layout, FitPrecision precision) const {
+  if (!shared_fits_) return FitUncached(layout, precision);
+  std::promise<Outcome> promise;
+  std::shared_future<Outcome> future;
+  {
+    std::lock_guard<std::mutex> lock(shared_fits_->mutex);
+    const auto [entry, claimed] = shared_fits_->fits.emplace(key, std::shared_future<Outcome>());
+    if (!claimed) {
+      future = entry->second;
+    } else {
+      entry->second = promise.get_future().share();
+    }
+  }
+  if (future.valid()) return future.get();  // fitted by another line; a fit never waits on one
+  try {
+    Outcome outcome = FitUncached(layout, precision);
+    promise.set_value(outcome);
+    return outcome;
+  } catch (...) {
+    promise.set_exception(std::current_exception());
+    throw;
+  }
+}
+
 std::vector<Evaluator> Evaluator::Speculators(int count, int num_threads) const {
+  const auto shared_fits = std::make_shared<SharedFits>();
   const auto line_work = std::make_shared<std::vector<std::atomic<int64_t>>>(count);
   for (std::atomic<int64_t>& work : *line_work) work = 0;
   const auto spare_threads = std::make_shared<std::atomic<int>>(0);
@@ -137,6 +169,7 @@ std::vector<Evaluator> Evaluator::Speculators(int count, int num_threads) const 
     speculator.line_ = i;
     speculator.work_at_start_ = work_;
     speculator.spare_threads_ = spare_threads;
+    speculator.shared_fits_ = shared_fits;
   }
   return speculators;
 }
@@ -200,7 +233,7 @@ std::vector<Trial> Evaluator::FitAll(const std::vector<Layout>& layouts, FitPrec
   }
   const int borrowed = BorrowThreads(static_cast<int>(to_fit.size()) - options_.num_threads);
   ParallelFor(static_cast<int>(to_fit.size()), options_.num_threads + borrowed,
-              [&](int f) { outcomes[to_fit[f]] = FitUncached(layouts[jobs[to_fit[f]]], precision); });
+              [&](int f) { outcomes[to_fit[f]] = FitOnce(keys[jobs[to_fit[f]]], layouts[jobs[to_fit[f]]], precision); });
   ReturnThreads(borrowed);
   for (size_t j = 0; j < jobs.size(); ++j) {
     const Outcome& outcome = outcomes[j];

@@ -125,6 +125,11 @@ class Evaluator {
     std::string error;  // the engine's error, when it rejected the layout
   };
   Outcome FitUncached(const Layout& layout, FitPrecision precision) const;
+  // FitUncached; for a speculator, once per speculation: the outcome another line's
+  // speculator fitted or is fitting, if any (lines that reach the same layout, as a beam branch
+  // that takes another's main form does, would otherwise fit it twice where the serial run's
+  // cache fits it once).
+  Outcome FitOnce(const std::string& key, const Layout& layout, FitPrecision precision) const;
   static std::string Key(const Layout& layout, FitPrecision precision);
 
   std::chrono::steady_clock::time_point start_;
@@ -150,6 +155,9 @@ class Evaluator {
   std::shared_ptr<std::vector<std::atomic<int64_t>>> line_work_;
   int line_ = 0;
   int64_t work_at_start_ = 0;
+  // The fits of this speculation by key, shared by its speculators (FitOnce).
+  struct SharedFits;
+  std::shared_ptr<SharedFits> shared_fits_;
   // Threads lent by the speculators whose lines have ended, shared by those still running.
   std::shared_ptr<std::atomic<int>> spare_threads_;
   int BorrowThreads(int wanted) const;

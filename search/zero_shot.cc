@@ -71,12 +71,13 @@ class StagedSearch {
   // made them then (Evaluator::Adopt). So the result, the log and the work count are a serial
   // search's, for any thread count; only the wall time changes. A line the real run takes
   // further than its copy did (the budget ends elsewhere) fits the rest itself.
+  // Lines that reach the same layouts fit them once (Evaluator::FitOnce), so a line often waits
+  // on another's fit: each may batch on all the threads, since a waiting thread takes no core.
   void Speculate(const std::vector<Task>& tasks) {
     const int threads = evaluator_.options().num_threads;
     const int count = static_cast<int>(tasks.size());
     if (threads < 2 || count < 2 || !evaluator_.InBudget()) return;
-    const int threads_each = std::max(1, threads / std::min(threads, count));
-    std::vector<Evaluator> speculators = evaluator_.Speculators(count, threads_each);
+    std::vector<Evaluator> speculators = evaluator_.Speculators(count, threads);
     std::vector<StagedSearch> copies;
     copies.reserve(tasks.size());
     for (Evaluator& speculator : speculators) copies.push_back(StagedSearch(*this, std::move(speculator)));
