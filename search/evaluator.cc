@@ -125,24 +125,33 @@ void Evaluator::Prefetch(const std::vector<Layout>& layouts, FitPrecision precis
 }
 
 struct Evaluator::SharedFits {
+  struct Fit {
+    int line;  // the speculator's that fits it
+    std::shared_future<Outcome> outcome;
+  };
   std::mutex mutex;
-  std::map<std::string, std::shared_future<Outcome>> fits;
+  std::map<std::string, Fit> fits;
 };
 
 Evaluator::Outcome Evaluator::FitOnce(const std::string& key, const Layout& layout, FitPrecision precision) const {
   if (!shared_fits_) return FitUncached(layout, precision);
   std::promise<Outcome> promise;
   std::shared_future<Outcome> future;
+  int line = line_;
   {
     std::lock_guard<std::mutex> lock(shared_fits_->mutex);
-    const auto [entry, claimed] = shared_fits_->fits.emplace(key, std::shared_future<Outcome>());
+    const auto [entry, claimed] = shared_fits_->fits.emplace(key, SharedFits::Fit{line_, {}});
     if (!claimed) {
-      future = entry->second;
+      future = entry->second.outcome, line = entry->second.line;
     } else {
-      entry->second = promise.get_future().share();
+      entry->second.outcome = promise.get_future().share();
     }
   }
-  if (future.valid()) return future.get();  // fitted by another line; a fit never waits on one
+  if (future.valid()) {  // fitted by another line; a fit never waits on one
+    Outcome outcome = future.get();
+    outcome.from_earlier_line = line < line_;
+    return outcome;
+  }
   try {
     Outcome outcome = FitUncached(layout, precision);
     promise.set_value(outcome);
@@ -237,11 +246,12 @@ std::vector<Trial> Evaluator::FitAll(const std::vector<Layout>& layouts, FitPrec
   ReturnThreads(borrowed);
   for (size_t j = 0; j < jobs.size(); ++j) {
     const Outcome& outcome = outcomes[j];
+    cache_.emplace(keys[jobs[j]], outcome.trial);
+    if (outcome.from_earlier_line) continue;  // the serial run's cache hit: no work, no log
     num_fits_ += outcome.fitted ? 1 : 0;
     work_ += outcome.work;
     if (outcome.fitted) fit_costs_.push_back({outcome.work, outcome.seconds});
     if (!outcome.error.empty()) Note("fit failed: " + outcome.error);
-    cache_.emplace(keys[jobs[j]], outcome.trial);
     if (speculative_) speculated_.emplace_back(keys[jobs[j]], outcome);
   }
   if (speculative_) (*line_work_)[line_] = work_ - work_at_start_;

@@ -123,6 +123,9 @@ class Evaluator {
     int64_t work = 0;
     double seconds = 0;
     std::string error;  // the engine's error, when it rejected the layout
+    // A speculator's outcome that an earlier line's speculator fitted: the serial run will have
+    // it cached by then, so it counts no work here.
+    bool from_earlier_line = false;
   };
   Outcome FitUncached(const Layout& layout, FitPrecision precision) const;
   // FitUncached; for a speculator, once per speculation: the outcome another line's
