@@ -1,7 +1,5 @@
 #include "ops/subdivision.h"
 
-#include "ops/face_list_cache.h"
-
 #include <opensubdiv/far/primvarRefiner.h>
 #include <opensubdiv/far/topologyDescriptor.h>
 #include <opensubdiv/far/topologyRefinerFactory.h>
@@ -10,6 +8,8 @@
 #include <map>
 #include <memory>
 #include <utility>
+
+#include "ops/face_list_cache.h"
 
 namespace opgraph {
 namespace {
