@@ -1,6 +1,7 @@
 #include "search/face_residuals.h"
 
 #include <algorithm>
+#include <cmath>
 #include <limits>
 
 #include "core/geometry.h"
@@ -8,6 +9,44 @@
 #include "ops/sequence.h"
 
 namespace opgraph {
+namespace {
+
+// Openings: the samples of a thin-walled vessel's cavity lie nearer its side faces than its
+// mouth, so no face collects them as `inside`; the mouth shows as a face whose middle (a disc
+// of 0.3 sqrt(area) about the centroid) no target sample comes near, over a floor.
+void FindOpenings(const std::vector<Vec3d>& samples, double threshold, FaceResiduals* r) {
+  const int num_faces = static_cast<int>(r->centroids.size());
+  r->opening_depth.assign(num_faces, 0.0), r->opening_rim.assign(num_faces, 0.0);
+  for (int f = 0; f < num_faces; ++f) {
+    const double side = std::sqrt(0.5 * r->areas[f]);
+    if (side < 2 * threshold) continue;  // too small to hold a rim and an opening
+    const double middle = 0.3 * side;
+    int covering = 0, above = 0;
+    // The floor under the face's centre (a narrower disc: a subdivided cavity is a bowl).
+    double floor = std::numeric_limits<double>::infinity(), rim_radius = 0.5 * side;
+    for (const Vec3d& q : samples) {
+      const Vec3d offset = q - r->centroids[f];
+      const double along = offset.dot(r->normals[f]);
+      const double radius = (offset - along * r->normals[f]).norm();
+      if (std::abs(along) <= threshold) {
+        if (radius < middle) ++covering;
+        if (radius < 0.5 * side) rim_radius = std::min(rim_radius, radius);
+      } else if (radius < middle) {
+        if (along > 0) ++above;
+        if (along < 0 && radius < 0.5 * middle) floor = std::min(floor, -along);
+      }
+    }
+    // A few stray samples (a thin rod through the middle) do not cover a face. Nothing stands
+    // on an opening (a boss wider than the middle is not one); a floor nearer than twice the
+    // threshold is a face fitted off the surface, or a recess the `inside` samples show; and
+    // with no floor at all it is a hole through the shape (a Boolean's, ProposeThroughHoles).
+    if (covering > 2 || above > 2 || !(floor > 2 * threshold) || !std::isfinite(floor)) continue;
+    r->opening_depth[f] = floor;
+    r->opening_rim[f] = std::clamp(0.5 * side - rim_radius, 0.03 * side, 0.4 * side);
+  }
+}
+
+}  // namespace
 
 FaceResiduals ComputeFaceResiduals(const Target& target, const Layout& layout) {
   Sequence sequence = ParseSequence(layout.Document());
@@ -33,8 +72,11 @@ FaceResiduals ComputeFaceResiduals(const Target& target, const Layout& layout) {
   const Positions<double>& points = target.points();
   const size_t stride = std::max<size_t>(1, points.size() / 4000);
   r.num_samples = points.size() / stride;
+  std::vector<Vec3d> samples;
+  samples.reserve(r.num_samples + 1);
   for (size_t i = 0; i < points.size(); i += stride) {
     const Vec3d q = layout.LocalToCage(world_from_local.transpose() * (points[i] - translation));
+    samples.push_back(q);
     const ClosestPoint closest = tree.Closest(q);
     if (closest.triangle < 0) continue;
     const int nearest = triangles[closest.triangle].face;
@@ -48,6 +90,7 @@ FaceResiduals ComputeFaceResiduals(const Target& target, const Layout& layout) {
   for (int f = 0; f < num_faces; ++f) {
     if (!r.outside[f].empty()) r.outside_spread[f] /= static_cast<double>(r.outside[f].size());
   }
+  FindOpenings(samples, threshold, &r);
   return r;
 }
 

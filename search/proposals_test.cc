@@ -60,10 +60,51 @@ TEST(Proposals, ExtrusionOnTheFaceWithTheResidual) {
   EXPECT_GT(ExpectAllEvaluate(pose, rounds), 0);
 }
 
+TEST(Proposals, InsetAndExtrudeInAtAThinWalledVesselsMouth) {
+  // A deep vessel, walls 0.05 thick: its cavity's samples lie nearer the side faces than the
+  // mouth, so only the mouth (no surface in its middle, a floor under it) shows the cavity.
+  build::FaceTarget top;
+  top.normals = {Vec3d::UnitZ()};
+  build::FaceTarget mouth;  // the inset's inner face only
+  mouth.centers = {Vec3d(0, 0, 1)};
+  mouth.expect = 1;
+  build::ExtrudeArgs cavity{mouth, false, -1.6};
+  const auto target =
+      MakeTarget({build::GlobalScale(Vec3d(0.5, 0.5, 1)), build::Inset(top, 0.05), build::Extrude(cavity)});
+  const Layout pose = PoseLayoutOnBox(Eigen::Matrix3d::Identity(), Vec3d(-0.5, -0.5, -1), Vec3d(0.5, 0.5, 1));
+  const FaceResiduals residuals = ComputeFaceResiduals(*target, pose);
+  int openings = 0;
+  for (size_t f = 0; f < residuals.centroids.size(); ++f) {
+    if (residuals.opening_depth[f] == 0) continue;
+    ++openings;
+    EXPECT_NEAR(residuals.normals[f].z(), 1.0, 1e-9);
+    EXPECT_NEAR(residuals.opening_depth[f], 1.6, 0.1);
+    EXPECT_NEAR(residuals.opening_rim[f], 0.05, 0.03);
+  }
+  EXPECT_EQ(openings, 1);
+  const std::vector<Round> rounds = ProposeExtrusions(pose, residuals);
+  ASSERT_FALSE(rounds.empty());
+  ASSERT_EQ(rounds[0].alternatives.size(), 2u);  // without and with Subdivision
+  Layout first = pose;
+  ASSERT_FALSE(rounds[0].alternatives[0](&first).empty());
+  ASSERT_EQ(first.details.size(), 2u);
+  EXPECT_EQ(first.details[0]["op"], "Inset");
+  EXPECT_NEAR(first.details[0]["params"]["thickness"].get<double>(), 0.05, 0.03);
+  EXPECT_EQ(first.details[1]["op"], "Extrude");
+  EXPECT_NEAR(first.details[1]["params"]["height"].get<double>(), -1.6, 0.1);
+  EXPECT_FALSE(first.subdivide);
+  Layout smoothed = pose;
+  ASSERT_FALSE(rounds[0].alternatives[1](&smoothed).empty());
+  EXPECT_TRUE(smoothed.subdivide);
+  EXPECT_GT(ExpectAllEvaluate(pose, rounds), 0);
+}
+
 TEST(Proposals, NoExtrusionWhereTheCageFits) {
   const auto target = MakeTarget({build::GlobalScale(Vec3d(1, 1, 0.5))});
   const Layout pose = PoseLayoutOnBox(Eigen::Matrix3d::Identity(), Vec3d(-1, -1, -0.5), Vec3d(1, 1, 0.5));
-  EXPECT_TRUE(ProposeExtrusions(pose, ComputeFaceResiduals(*target, pose)).empty());
+  const FaceResiduals residuals = ComputeFaceResiduals(*target, pose);
+  EXPECT_TRUE(ProposeExtrusions(pose, residuals).empty());
+  for (double depth : residuals.opening_depth) EXPECT_EQ(depth, 0.0);
 }
 
 TEST(Proposals, MirroredPairAcrossItsGap) {

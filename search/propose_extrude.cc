@@ -11,19 +11,26 @@ struct FaceCandidate {
   int face;
   double height;  // signed: out > 0, in < 0
   size_t support;
-  double width = 1;
+  double width = 1;  // of the cap (out) or of the inset region (in)
+  bool opening = false;
 };
 
-// Faces with many samples far outside (protrusion) or inside (cavity), by support x height.
+// Openings (a mouth over a floor), then faces with many samples far outside (protrusion) or
+// inside (cavity), by support x height.
 std::vector<FaceCandidate> FaceCandidates(const FaceResiduals& r) {
   const size_t min_support = std::max<size_t>(5, r.num_samples / 100);
   std::vector<FaceCandidate> candidates;
   for (int f = 0; f < static_cast<int>(r.centroids.size()); ++f) {
+    if (r.opening_depth[f] > 0) {
+      // Inset to the rim, then down to the floor (`width` as ExtrusionRound reads it).
+      const double width = 1 - 2 * r.opening_rim[f] / std::sqrt(r.areas[f]);
+      candidates.push_back({f, -r.opening_depth[f], std::max(min_support, r.inside[f].size()), width, true});
+    }
     for (int sign : {1, -1}) {
       std::vector<double> d = sign > 0 ? r.outside[f] : r.inside[f];
-      if (d.size() < min_support) continue;
+      if (d.size() < min_support || (sign < 0 && r.opening_depth[f] > 0)) continue;
       std::nth_element(d.begin(), d.begin() + d.size() * 3 / 4, d.end());
-      FaceCandidate candidate{f, sign * d[d.size() * 3 / 4], d.size()};
+      FaceCandidate candidate{f, sign * d[d.size() * 3 / 4], d.size(), 0.7};
       if (sign > 0) {
         // A narrow protrusion starts from a narrowed cap (the Extrude's width). Uniform samples
         // over a square of side L lie sqrt(1/6) L from its centre (RMS).
@@ -34,6 +41,7 @@ std::vector<FaceCandidate> FaceCandidates(const FaceResiduals& r) {
     }
   }
   std::sort(candidates.begin(), candidates.end(), [](const FaceCandidate& a, const FaceCandidate& b) {
+    if (a.opening != b.opening) return a.opening;
     return a.support * std::abs(a.height) > b.support * std::abs(b.height);
   });
   return candidates;
@@ -49,7 +57,7 @@ std::vector<std::vector<FaceCandidate>> Groups(const std::vector<FaceCandidate>&
     for (size_t j = i + 1; j < candidates.size(); ++j) {
       const FaceCandidate& a = candidates[i];
       const FaceCandidate& b = candidates[j];
-      if (grouped[j] || (a.height > 0) != (b.height > 0)) continue;
+      if (grouped[j] || (a.height > 0) != (b.height > 0) || a.opening != b.opening) continue;
       const bool similar_height = std::abs(a.height - b.height) < 0.3 * std::abs(a.height);
       const bool same_direction = r.normals[a.face].dot(r.normals[b.face]) > 0.9;
       // Symmetric growth on opposite or perpendicular sides counts as a pattern too.
@@ -92,17 +100,23 @@ Round ExtrusionRound(const std::vector<FaceCandidate>& group, const FaceResidual
     });
   }
   // Only on faces sharing one plane's normal: an inset region that folds between faces at a
-  // boundary corner can differ from Blender's (ops/inset.h).
-  const double inset_width = height > 0 ? width : 0.7;
-  if (inset_width < 0.8 && coplanar_normals) {
-    const double thickness = 0.5 * (1 - inset_width) * side;
+  // boundary corner can differ from Blender's (ops/inset.h). A cavity always has its rim.
+  if ((width < 0.8 || height < 0) && coplanar_normals) {
+    const double thickness = 0.5 * (1 - width) * side;
     build::ExtrudeArgs extrude{faces, true, height};
-    round.alternatives.push_back([faces, extrude, thickness, count](Layout* l) -> std::string {
-      l->details.push_back(build::Inset(faces, thickness));
-      l->details.push_back(build::Extrude(extrude));
-      return "+Inset " + std::to_string(thickness) + ", Extrude " + (extrude.height > 0 ? "out" : "in") + count + " " +
-             std::to_string(extrude.height);
-    });
+    // A vessel's cavity is usually smoothed with the rest: its mouth also with Subdivision.
+    const bool opening = std::all_of(group.begin(), group.end(), [](const FaceCandidate& c) { return c.opening; });
+    for (bool subdivide : {false, true}) {
+      if (subdivide && !opening) continue;
+      round.alternatives.push_back([faces, extrude, thickness, count, subdivide](Layout* l) -> std::string {
+        if (subdivide && l->subdivide) return "";
+        l->details.push_back(build::Inset(faces, thickness));
+        l->details.push_back(build::Extrude(extrude));
+        l->subdivide = l->subdivide || subdivide;
+        return "+Inset " + std::to_string(thickness) + ", Extrude " + (extrude.height > 0 ? "out" : "in") + count +
+               " " + std::to_string(extrude.height) + (subdivide ? " + Subdivision(2)" : "");
+      });
+    }
   }
   return round;
 }
@@ -110,8 +124,12 @@ Round ExtrusionRound(const std::vector<FaceCandidate>& group, const FaceResidual
 }  // namespace
 
 std::vector<Round> ProposeExtrusions(const Layout& /*best*/, const FaceResiduals& residuals) {
+  std::vector<std::vector<FaceCandidate>> groups = Groups(FaceCandidates(residuals), residuals);
+  // Openings first: a mouth over a floor is plain evidence of its cavity.
+  std::stable_partition(groups.begin(), groups.end(),
+                        [](const std::vector<FaceCandidate>& group) { return group[0].opening; });
   std::vector<Round> rounds;
-  for (const std::vector<FaceCandidate>& group : Groups(FaceCandidates(residuals), residuals)) {
+  for (const std::vector<FaceCandidate>& group : groups) {
     rounds.push_back(ExtrusionRound(group, residuals));
   }
   return rounds;
