@@ -1,6 +1,7 @@
 #include "search/face_residuals.h"
 
 #include <algorithm>
+#include <bitset>
 #include <cmath>
 #include <limits>
 
@@ -13,7 +14,9 @@ namespace {
 
 // Openings: the samples of a thin-walled vessel's cavity lie nearer its side faces than its
 // mouth, so no face collects them as `inside`; the mouth shows as a face whose middle (a disc
-// of 0.3 sqrt(area) about the centroid) no target sample comes near, over a floor.
+// of 0.3 sqrt(area) about the centroid) no target sample comes near, over a floor, inside a rim
+// all round (a table's underside, seen through its box's bottom face, has legs at the corners
+// only).
 void FindOpenings(const std::vector<Vec3d>& samples, double threshold, FaceResiduals* r) {
   const int num_faces = static_cast<int>(r->centroids.size());
   r->opening_depth.assign(num_faces, 0.0), r->opening_rim.assign(num_faces, 0.0);
@@ -22,6 +25,9 @@ void FindOpenings(const std::vector<Vec3d>& samples, double threshold, FaceResid
     if (side < 2 * threshold) continue;  // too small to hold a rim and an opening
     const double middle = 0.3 * side;
     int covering = 0, above = 0;
+    const Vec3d u = r->normals[f].unitOrthogonal(), v = r->normals[f].cross(u);
+    constexpr int kSectors = 12;
+    std::bitset<kSectors> rim_sectors;
     // The floor under the face's centre (a narrower disc: a subdivided cavity is a bowl).
     double floor = std::numeric_limits<double>::infinity(), rim_radius = 0.5 * side;
     for (const Vec3d& q : samples) {
@@ -31,6 +37,10 @@ void FindOpenings(const std::vector<Vec3d>& samples, double threshold, FaceResid
       if (std::abs(along) <= threshold) {
         if (radius < middle) ++covering;
         if (radius < 0.5 * side) rim_radius = std::min(rim_radius, radius);
+        if (radius >= middle && radius < 0.75 * side) {  // the face's corners lie at 0.71 side
+          const double turn = (std::atan2(offset.dot(v), offset.dot(u)) + M_PI) / (2 * M_PI);
+          rim_sectors.set(std::min(kSectors - 1, static_cast<int>(turn * kSectors)));
+        }
       } else if (radius < middle) {
         if (along > 0) ++above;
         if (along < 0 && radius < 0.5 * middle) floor = std::min(floor, -along);
@@ -40,7 +50,11 @@ void FindOpenings(const std::vector<Vec3d>& samples, double threshold, FaceResid
     // on an opening (a boss wider than the middle is not one); a floor nearer than twice the
     // threshold is a face fitted off the surface, or a recess the `inside` samples show; and
     // with no floor at all it is a hole through the shape (a Boolean's, ProposeThroughHoles).
-    if (covering > 2 || above > 2 || !(floor > 2 * threshold) || !std::isfinite(floor)) continue;
+    // Four corner legs, each across a sector boundary, mark at most 8 of the 12 sectors.
+    if (covering > 2 || above > 2 || !(floor > 2 * threshold) || !std::isfinite(floor) ||
+        rim_sectors.count() < 10) {
+      continue;
+    }
     r->opening_depth[f] = floor;
     r->opening_rim[f] = std::clamp(0.5 * side - rim_radius, 0.03 * side, 0.4 * side);
   }

@@ -149,6 +149,27 @@ TEST(Proposals, SlabUnderATable) {
   EXPECT_FALSE(slabs[1].layout.grid.empty());
 }
 
+TEST(Proposals, NoOpeningUnderATablesThinLegs) {
+  // The box's bottom face under a table: nothing in its middle and the top above it as a
+  // floor, but legs at the corners only, no rim all round: not a vessel's mouth.
+  build::VertexTarget x_loops, y_loops;
+  x_loops.box.lo[0] = -0.5, x_loops.box.hi[0] = 0.5;
+  y_loops.box.lo[1] = -0.5, y_loops.box.hi[1] = 0.5;
+  build::ExtrudeArgs legs;
+  legs.faces.normals = {-Vec3d::UnitZ()};
+  legs.faces.centers = {Vec3d(-1.375, -0.915, -0.1), Vec3d(1.375, -0.915, -0.1), Vec3d(-1.375, 0.915, -0.1),
+                        Vec3d(1.375, 0.915, -0.1)};
+  legs.faces.expect = 4;
+  legs.individual = true;
+  legs.height = 1.5;
+  const auto target = MakeTarget({build::LoopCut(Axis::kX, 2, Vec3d::Zero()), build::LoopCut(Axis::kY, 2, Vec3d::Zero()),
+                                  build::EdgeLoopScale(x_loops, Vec3d(2.5, 1, 1)),
+                                  build::EdgeLoopScale(y_loops, Vec3d(1, 2.5, 1)),
+                                  build::GlobalScale(Vec3d(1.5, 1, 0.1)), build::Extrude(legs)});
+  const Layout pose = PoseLayoutOnBox(Eigen::Matrix3d::Identity(), Vec3d(-1.5, -1, -1.6), Vec3d(1.5, 1, 0.1));
+  for (double depth : ComputeFaceResiduals(*target, pose).opening_depth) EXPECT_EQ(depth, 0.0);
+}
+
 TEST(Proposals, BooleanOnTheClusterOfMissingMaterial) {
   // A block with a cylindrical boss on its +X side, off centre (added by a Boolean union).
   build::BooleanArgs boss;
