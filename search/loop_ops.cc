@@ -19,9 +19,12 @@ std::vector<Json> LoopCutWithScales(int axis, int cuts, int expect, std::vector<
   return ops;
 }
 
-std::vector<Json> LoopCutGrid(int first_axis, int second_axis, int first_expect) {
+std::vector<Json> LoopCutGrid(int first_axis, int second_axis, int first_expect, const Eigen::Vector2d& spread) {
   std::vector<Json> grid = LoopCutWithScales(first_axis, 2, first_expect, {{0, 1}});
-  const std::vector<Json> second = LoopCutWithScales(second_axis, 2, -1, {{0, 1}});
+  std::vector<Json> second = LoopCutWithScales(second_axis, 2, -1, {{0, 1}});
+  // Two cuts lie at +-1/3 of the cube's half extent: a loop scale of 3 * spread moves them.
+  grid[1]["params"]["scale"][first_axis] = 3 * spread[0];
+  second[1]["params"]["scale"][second_axis] = 3 * spread[1];
   grid.insert(grid.end(), second.begin(), second.end());
   return grid;
 }

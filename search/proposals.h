@@ -97,9 +97,11 @@ struct Expansion {
 };
 std::vector<Expansion> ProposeGrids(const Layout& best);
 
-// The body of a table or a stool: the cube placed on the slab between the largest layers of
-// the target's surface facing + and - along one axis, alone and with a loop-cut grid across it.
-// Empty when the target has no slab clearly thinner than its box.
+// The body of a table, a stool or a chair: the cube placed on the slab between the largest
+// layers of the target's surface facing + and - along one axis, alone and with a loop-cut grid
+// across it, and with a grid whose loops are where the parts beyond the slab start (a table's
+// legs at its corners); for the two heaviest slabs (a chair's seat and its backrest). Empty
+// when the target has no slab clearly thinner than its box.
 std::vector<Expansion> ProposeSlabs(const Target& target, const Layout& pose);
 
 // A symmetric target in two parts (a pair of wings, of legs, of towers): the cube on the part

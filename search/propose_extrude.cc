@@ -47,26 +47,31 @@ std::vector<FaceCandidate> FaceCandidates(const FaceResiduals& r) {
   return candidates;
 }
 
-// Faces wanting the same growth (a table's four legs, a cross's arms) together, then the six
-// strongest single faces.
+// Faces wanting the same growth together, then the six strongest single faces. Faces facing
+// one way first (a table's four legs, a chair's backrest row), then with the faces of a
+// symmetric pattern on other sides (a cross's arms): a chair's legs and backrest of about the
+// same height are two groups, not one.
 std::vector<std::vector<FaceCandidate>> Groups(const std::vector<FaceCandidate>& candidates, const FaceResiduals& r) {
-  std::vector<std::vector<FaceCandidate>> groups;
-  std::vector<bool> grouped(candidates.size(), false);
+  std::vector<std::vector<FaceCandidate>> groups, patterns;
+  // Each face in at most one group of either kind.
+  std::vector<bool> in_facing(candidates.size(), false), in_pattern(candidates.size(), false);
   for (size_t i = 0; i < candidates.size(); ++i) {
-    std::vector<FaceCandidate> group = {candidates[i]};
+    const FaceCandidate& a = candidates[i];
+    std::vector<FaceCandidate> facing = {a}, pattern = {a};
     for (size_t j = i + 1; j < candidates.size(); ++j) {
-      const FaceCandidate& a = candidates[i];
       const FaceCandidate& b = candidates[j];
-      if (grouped[j] || (a.height > 0) != (b.height > 0) || a.opening != b.opening) continue;
-      const bool similar_height = std::abs(a.height - b.height) < 0.3 * std::abs(a.height);
+      if ((a.height > 0) != (b.height > 0) || a.opening != b.opening) continue;
+      if (!(std::abs(a.height - b.height) < 0.3 * std::abs(a.height))) continue;
       const bool same_direction = r.normals[a.face].dot(r.normals[b.face]) > 0.9;
-      // Symmetric growth on opposite or perpendicular sides counts as a pattern too.
       const bool same_size =
           std::abs(static_cast<double>(b.support) - static_cast<double>(a.support)) < 0.5 * a.support;
-      if (similar_height && (same_direction || same_size)) group.push_back(b), grouped[j] = true;
+      if (same_direction && !in_facing[i] && !in_facing[j]) facing.push_back(b), in_facing[j] = true;
+      if ((same_direction || same_size) && !in_pattern[i] && !in_pattern[j]) pattern.push_back(b), in_pattern[j] = true;
     }
-    if (group.size() > 1) groups.push_back(group);
+    if (facing.size() > 1) groups.push_back(facing);
+    if (pattern.size() > facing.size()) patterns.push_back(pattern);
   }
+  groups.insert(groups.end(), patterns.begin(), patterns.end());
   for (size_t i = 0; i < candidates.size() && i < 6; ++i) groups.push_back({candidates[i]});
   return groups;
 }
