@@ -175,7 +175,7 @@ TEST(ZeroShot, TheBeamsFirstBranchIsTheGreedySearch) {
 // the search, their fits taken later) changes the wall time and nothing else: with a budget
 // that ends inside the beam, two threads give one thread's log, work and sequence, and most of
 // their fits were made ahead.
-constexpr int64_t kBudgetEndingInTheBeam = 200000;
+constexpr int64_t kBudgetEndingInTheBeam = 280000;
 
 TEST(ZeroShot, SpeculationChangesNothingButTheTime) {
   const Mesh target_mesh = BuildMesh(kModellerShapes[2][1]);  // the bench
