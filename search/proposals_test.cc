@@ -146,9 +146,8 @@ std::unique_ptr<Target> ThinLeggedTable() {
   legs.individual = true;
   legs.height = 1.5;
   return MakeTarget({build::LoopCut(Axis::kX, 2, Vec3d::Zero()), build::LoopCut(Axis::kY, 2, Vec3d::Zero()),
-                                  build::EdgeLoopScale(x_loops, Vec3d(2.5, 1, 1)),
-                                  build::EdgeLoopScale(y_loops, Vec3d(1, 2.5, 1)),
-                                  build::GlobalScale(Vec3d(1.5, 1, 0.1)), build::Extrude(legs)});
+                     build::EdgeLoopScale(x_loops, Vec3d(2.5, 1, 1)), build::EdgeLoopScale(y_loops, Vec3d(1, 2.5, 1)),
+                     build::GlobalScale(Vec3d(1.5, 1, 0.1)), build::Extrude(legs)});
 }
 
 TEST(Proposals, SlabUnderATable) {
@@ -177,7 +176,7 @@ TEST(Proposals, SlabGridWhereTheLegsStart) {
     if (slab.what.find("where the parts below start") == std::string::npos) continue;
     ++placed;
     ASSERT_EQ(slab.layout.grid.size(), 4u);
-    // The loops' scales along X and along Y (the first and third op scale the cuts).
+    // The grid's loop scales (its second and fourth ops), along X and along Y.
     EXPECT_NEAR(slab.layout.grid[1]["params"]["scale"][0].get<double>(), 2.5, 0.15);
     EXPECT_NEAR(slab.layout.grid[3]["params"]["scale"][1].get<double>(), 2.5, 0.15);
     Sequence sequence = ParseSequence(slab.layout.Document());
