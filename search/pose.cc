@@ -35,13 +35,18 @@ void TurnToSmallestRectangle(const Positions<double>& points, const Vec3d& mean,
 
 }  // namespace
 
-Layout PoseLayout(const Target& target, const Eigen::Matrix3d& world_from_local, int slab_axis, double slab_lo,
-                  double slab_hi) {
-  Vec3d lo = Vec3d::Constant(kInf), hi = Vec3d::Constant(-kInf);
+void LocalBox(const Target& target, const Eigen::Matrix3d& world_from_local, Vec3d* lo, Vec3d* hi) {
+  *lo = Vec3d::Constant(kInf), *hi = Vec3d::Constant(-kInf);
   for (const Vec3d& p : target.points()) {
     const Vec3d q = world_from_local.transpose() * p;
-    lo = lo.cwiseMin(q), hi = hi.cwiseMax(q);
+    *lo = lo->cwiseMin(q), *hi = hi->cwiseMax(q);
   }
+}
+
+Layout PoseLayout(const Target& target, const Eigen::Matrix3d& world_from_local, int slab_axis, double slab_lo,
+                  double slab_hi) {
+  Vec3d lo, hi;
+  LocalBox(target, world_from_local, &lo, &hi);
   if (slab_axis >= 0) lo[slab_axis] = slab_lo, hi[slab_axis] = slab_hi;
   return PoseLayoutOnBox(world_from_local, lo, hi);
 }

@@ -12,6 +12,9 @@ namespace opgraph {
 Layout PoseLayout(const Target& target, const Eigen::Matrix3d& world_from_local, int slab_axis = -1,
                   double slab_lo = 0, double slab_hi = 0);
 
+// The target's box in the frame `world_from_local` (coordinates along its columns).
+void LocalBox(const Target& target, const Eigen::Matrix3d& world_from_local, Vec3d* lo, Vec3d* hi);
+
 // The cube on the box [lo, hi] of the frame `world_from_local` (coordinates along its columns).
 Layout PoseLayoutOnBox(const Eigen::Matrix3d& world_from_local, const Vec3d& lo, const Vec3d& hi);
 

@@ -64,13 +64,10 @@ std::vector<Slab> FindSlabs(const Target& target, const Eigen::Matrix3d& world_f
 // each of the two other axes, the least |coordinate| (2nd percentile, in the box's half
 // extents) of the target's samples there; a table's legs at the corners give about 0.8 on both
 // axes, a pedestal under the middle about 0. Zero when the side holds under 5% of the samples.
-Eigen::Vector2d PartsStart(const Target& target, const Layout& pose, const Slab& slab, int side) {
+// [lo, hi]: the target's box in the pose's frame (LocalBox).
+Eigen::Vector2d PartsStart(const Target& target, const Layout& pose, const Vec3d& lo, const Vec3d& hi,
+                           const Slab& slab, int side) {
   const int a = (slab.axis + 1) % 3, b = (slab.axis + 2) % 3;
-  Vec3d lo = Vec3d::Constant(std::numeric_limits<double>::infinity()), hi = -lo;
-  for (const Vec3d& p : target.points()) {
-    const Vec3d q = pose.world_from_local.transpose() * p;
-    lo = lo.cwiseMin(q), hi = hi.cwiseMax(q);
-  }
   const Vec3d centre = (lo + hi) / 2, half = ((hi - lo) / 2).cwiseMax(Vec3d::Constant(1e-12));
   const double margin = 0.02 * (hi - lo).norm();
   std::vector<double> across_a, across_b;
@@ -93,6 +90,8 @@ Eigen::Vector2d PartsStart(const Target& target, const Layout& pose, const Slab&
 std::vector<Expansion> ProposeSlabs(const Target& target, const Layout& pose) {
   std::vector<Expansion> expansions;
   const std::vector<Slab> slabs = FindSlabs(target, pose.world_from_local);
+  Vec3d lo, hi;
+  LocalBox(target, pose.world_from_local, &lo, &hi);
   for (size_t i = 0; i < slabs.size() && i < 2; ++i) {
     const Slab& slab = slabs[i];
     // The slab is not fitted alone: the rest of the target would pull it back to the bounding
@@ -112,7 +111,7 @@ std::vector<Expansion> ProposeSlabs(const Target& target, const Layout& pose) {
     // The grid's loops where the parts beyond the slab start (a table's legs at the corners):
     // the new corner faces are then the legs' sections, and their extrusions fit at once.
     for (int side : {-1, 1}) {
-      const Eigen::Vector2d start = PartsStart(target, pose, slab, side);
+      const Eigen::Vector2d start = PartsStart(target, pose, lo, hi, slab, side);
       if (!(start.minCoeff() > 0.2 && start.maxCoeff() < 0.95)) continue;
       Expansion placed = plain;
       placed.layout.grid = LoopCutGrid(std::min(a, b), std::max(a, b), 4, a < b ? start : start.reverse().eval());
