@@ -1,6 +1,5 @@
 // Slab bodies (search/proposals.h).
 #include <algorithm>
-#include <limits>
 #include <tuple>
 
 #include "search/loop_ops.h"
@@ -30,15 +29,16 @@ std::pair<int, double> DensestLayer(const std::vector<double>& count) {
 // Along some axis of `world_from_local`, the largest layer of the target's surface facing +
 // and the largest facing - bound a slab thinner than 60% of the box, both holding 5% of the
 // samples; such pairs, one per axis at most, heaviest first (a chair's seat and backrest).
-std::vector<Slab> FindSlabs(const Target& target, const Eigen::Matrix3d& world_from_local) {
+// [box_lo, box_hi]: the target's box in that frame (LocalBox).
+std::vector<Slab> FindSlabs(const Target& target, const Eigen::Matrix3d& world_from_local, const Vec3d& box_lo,
+                            const Vec3d& box_hi) {
   const Positions<double>& points = target.points();
   const Positions<double>& normals = target.normals();
   constexpr int kBins = 100;
   std::vector<std::pair<double, Slab>> slabs;
   for (int axis = 0; axis < 3; ++axis) {
     const Vec3d direction = world_from_local.col(axis);
-    double lo = std::numeric_limits<double>::infinity(), hi = -lo;
-    for (const Vec3d& p : points) lo = std::min(lo, direction.dot(p)), hi = std::max(hi, direction.dot(p));
+    const double lo = box_lo[axis], hi = box_hi[axis];
     if (!(hi - lo > 0)) continue;
     std::vector<double> plus(kBins, 0), minus(kBins, 0);
     for (size_t i = 0; i < points.size(); ++i) {
@@ -89,9 +89,9 @@ Eigen::Vector2d PartsStart(const Target& target, const Layout& pose, const Vec3d
 
 std::vector<Expansion> ProposeSlabs(const Target& target, const Layout& pose) {
   std::vector<Expansion> expansions;
-  const std::vector<Slab> slabs = FindSlabs(target, pose.world_from_local);
   Vec3d lo, hi;
   LocalBox(target, pose.world_from_local, &lo, &hi);
+  const std::vector<Slab> slabs = FindSlabs(target, pose.world_from_local, lo, hi);
   for (size_t i = 0; i < slabs.size() && i < 2; ++i) {
     const Slab& slab = slabs[i];
     // The slab is not fitted alone: the rest of the target would pull it back to the bounding
