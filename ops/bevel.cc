@@ -63,6 +63,7 @@ void BevelOp::Prepare(const Mesh& input) {
   std::vector<bool> touched(num_vertices, false);
   bool any = false;
   prepare_angle_margin_ = prepare_dot_margin_ = 1e300;
+  order_dependent_corner_ = false;
   for (int e = 0; e < topology->NumEdges(); ++e) {
     const HalfedgeTopology::Corners faces = topology->EdgeCorners(e);
     if (faces.size() != 2) continue;
@@ -258,6 +259,7 @@ void BevelOp::Prepare(const Mesh& input) {
         if (test == 0 && n == 3 && bv.selcount == 3) test = 1;
       }
       bv.kind = test != -1 && count == 3 ? Kind::kCubeCorner : Kind::kAdjacent;
+      if (bv.kind == Kind::kCubeCorner && bv.selcount < n) order_dependent_corner_ = true;
       if (bv.pipe >= 0) {
         if (bv.kind == Kind::kCubeCorner) {
           throw FieldError("limit_method", Unsupported(bv.selcount, v, "a pipe on a cube-like corner"));

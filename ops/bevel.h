@@ -113,6 +113,12 @@ class BevelOp : public OpBase<BevelOp> {
   // dot products of on-plane edges' face normals.
   double prepare_angle_margin_ = 1e300;
   double prepare_dot_margin_ = 1e300;
+  // A corner that Blender builds as a cube corner or as a grid by the numbering of its edges
+  // (tri_corner_test compares every beveled edge's offset with the first edge's, beveled or
+  // not): three boundary vertices with an un-beveled edge among the beveled ones. The two
+  // differ from 2 segments on (at a square corner from 3); our edges have no Blender numbering
+  // to tell which.
+  bool order_dependent_corner_ = false;
   bevel::VGrid<double> octant_{3, 2};
   std::vector<Polygon> input_faces_;
   std::vector<int> vertex_to_bev_;      // input vertex -> index in bev_verts_ or -1

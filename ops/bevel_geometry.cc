@@ -338,6 +338,7 @@ bool BevelOp::NearGeometricBranch(double gate, const Positions<double>& in) cons
   // bevel width apart (measured: a switch 5e-6 from ours held), normals' dot products by 1e-7.
   constexpr double kAngleMargin = 1e-4, kDotMargin = 1e-6;
   if (prepare_angle_margin_ < kAngleMargin || prepare_dot_margin_ < kDotMargin) return true;
+  if (order_dependent_corner_ && segments_ >= 2) return true;
   double margin = 1e300;
   Positions<double> out;
   ApplyNoting(params_.data(), gate, in, &out, &margin);

@@ -154,5 +154,31 @@ TEST(ReplayGuards, ABooleanOnAFaceFoldedPastARightAngleBreaksReplay) {
   EXPECT_FALSE(NearGeometricBranch(straight.sequence, straight.steps));
 }
 
+TEST(ReplayGuards, ABevelCornerBlenderBuildsByItsEdgeNumberingBreaksReplay) {
+  // A box with an inset top: at each outer top corner three beveled edges meet the inset's flat
+  // diagonal. Blender 3.4 builds such a corner as a cube corner or as a grid by which edge its
+  // numbering puts first (tri_corner_test): real Blender rebuilds 3 segments 2.6e-4 of the
+  // diagonal off and 4 segments 5.3e-4 off, and our mesh within 2.6e-8 once its edges are
+  // renumbered in reverse. With one segment there is no corner mesh (parity case
+  // bevel_inset_flat_seg1); a plain box's corners have no un-beveled edge.
+  auto inset_then_bevel = [](bool inset, int segments) {
+    build::FaceTarget top;
+    top.normals = {Vec3d::UnitZ()};
+    top.expect = 1;
+    std::vector<Json> ops = {build::GlobalScale(Vec3d(0.59, 0.53, 0.99))};
+    if (inset) ops.push_back(build::Inset(top, 0.12));
+    ops.push_back(build::Bevel(0.04, segments, 30));
+    return build::Document(ops);
+  };
+  for (int segments : {2, 3, 4}) {
+    const Evaluated corner = Evaluate(inset_then_bevel(true, segments));
+    EXPECT_TRUE(NearGeometricBranch(corner.sequence, corner.steps)) << segments;
+    const Evaluated box = Evaluate(inset_then_bevel(false, segments));
+    EXPECT_FALSE(NearGeometricBranch(box.sequence, box.steps)) << segments;
+  }
+  const Evaluated one_segment = Evaluate(inset_then_bevel(true, 1));
+  EXPECT_FALSE(NearGeometricBranch(one_segment.sequence, one_segment.steps));
+}
+
 }  // namespace
 }  // namespace opgraph
