@@ -157,10 +157,11 @@ TEST(ReplayGuards, ABooleanOnAFaceFoldedPastARightAngleBreaksReplay) {
 TEST(ReplayGuards, ABevelCornerBlenderBuildsByItsEdgeNumberingBreaksReplay) {
   // A box with an inset top: at each outer top corner three beveled edges meet the inset's flat
   // diagonal. Blender 3.4 builds such a corner as a cube corner or as a grid by which edge its
-  // numbering puts first (tri_corner_test): real Blender rebuilds 3 segments 2.6e-4 of the
-  // diagonal off and 4 segments 5.3e-4 off, and our mesh within 2.6e-8 once its edges are
-  // renumbered in reverse. With one segment there is no corner mesh (parity case
-  // bevel_inset_flat_seg1); a plain box's corners have no un-beveled edge.
+  // numbering puts first (tri_corner_test): real Blender rebuilds 3 segments
+  // (tests/data/replay_guards/bevel_corner_by_edge_numbering.json) 2.7e-4 of the diagonal off, 4
+  // segments 5.4e-4, and our mesh once its edges are renumbered in reverse. With one segment
+  // there is no corner mesh (parity case bevel_inset_flat_seg1); a plain box's corners have no
+  // un-beveled edge.
   auto inset_then_bevel = [](bool inset, int segments) {
     build::FaceTarget top;
     top.normals = {Vec3d::UnitZ()};
