@@ -104,6 +104,13 @@ std::vector<Expansion> ProposeGrids(const Layout& best);
 // when the target has no slab clearly thinner than its box.
 std::vector<Expansion> ProposeSlabs(const Target& target, const Layout& pose);
 
+// A box body (a limb's trunk, the block of an L or a T): along each axis of the pose's frame,
+// the largest run of the target where its section is one constant rectangle (the sides of a
+// box), at least a fifth of the box, with more beyond it; the cube on that run's box, for the
+// extrusions that grow the rest from it (an Extrude's narrowed cap tapers, so the rest need not
+// be boxes). Largest body first. Empty when no axis has one, or a part stands apart along it.
+std::vector<Expansion> ProposeBoxBodies(const Target& target, const Layout& pose);
+
 // A symmetric target in two parts (a pair of wings, of legs, of towers): the cube on the part
 // beyond each symmetry plane of the pose's frame that has a gap around it, mirrored there.
 // Empty when the target is not such a pair.

@@ -202,7 +202,7 @@ class StagedSearch {
   // best first (the pose itself among them when it scores so).
   std::vector<Branch> ChooseMainForms(const Trial& start) {
     const std::pair<const char*, Stage> stages[] = {
-        {"slab", &StagedSearch::Slab},   {"profile", &StagedSearch::Profiles}, {"deform", &StagedSearch::Deforms},
+        {"slab", &StagedSearch::Slab},   {"body", &StagedSearch::Bodies}, {"profile", &StagedSearch::Profiles}, {"deform", &StagedSearch::Deforms},
         {"ridge", &StagedSearch::Ridges}, {"hole", &StagedSearch::Holes},       {"detail", &StagedSearch::RepeatDetails},
         {"bevel", &StagedSearch::Bevels},  {"mirror", &StagedSearch::Mirror}};
     std::vector<Task> tasks;
@@ -258,6 +258,14 @@ class StagedSearch {
     if (slab_tried_ || !evaluator_.InBudget()) return best;
     slab_tried_ = true;
     return Grow("slab", best, ProposeSlabs(target_, best.layout), false);
+  }
+
+  // A box body (a limb's trunk, the block of an L): the cube on it, not fitted alone (the rest
+  // would pull it back to the box), with the extrusions that grow the rest, judged against the
+  // best sequence as a whole. A main form only.
+  Trial Bodies(Trial best) {
+    if (!evaluator_.InBudget()) return best;
+    return Grow("body", best, ProposeBoxBodies(target_, best.layout), false);
   }
 
   // A mirrored pair: the part fitted, then its extrusions, judged against the best sequence as
