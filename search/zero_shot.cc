@@ -202,9 +202,9 @@ class StagedSearch {
   // best first (the pose itself among them when it scores so).
   std::vector<Branch> ChooseMainForms(const Trial& start) {
     const std::pair<const char*, Stage> stages[] = {
-        {"slab", &StagedSearch::Slab},   {"body", &StagedSearch::Bodies}, {"profile", &StagedSearch::Profiles}, {"deform", &StagedSearch::Deforms},
-        {"ridge", &StagedSearch::Ridges}, {"hole", &StagedSearch::Holes},       {"detail", &StagedSearch::RepeatDetails},
-        {"bevel", &StagedSearch::Bevels},  {"mirror", &StagedSearch::Mirror}};
+        {"slab", &StagedSearch::Slab},     {"body", &StagedSearch::Bodies}, {"profile", &StagedSearch::Profiles},
+        {"deform", &StagedSearch::Deforms}, {"ridge", &StagedSearch::Ridges}, {"hole", &StagedSearch::Holes},
+        {"detail", &StagedSearch::RepeatDetails}, {"bevel", &StagedSearch::Bevels}, {"mirror", &StagedSearch::Mirror}};
     std::vector<Task> tasks;
     for (const auto& entry : stages) {
       const Stage stage = entry.second;
