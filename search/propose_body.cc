@@ -50,7 +50,7 @@ struct Body {
   Vec3d lo, hi;  // in the pose's frame
 };
 
-// Whether the samples of bins [first, last] along `axis`, but for `skip` bins at either end (a
+// Whether the samples of bins [first, last] along `axis`, but for kReach bins at either end (a
 // body's end faces and the rims where parts grow from it), lie on the sides of `section`'s
 // rectangle: a box's, not an L's or a T's.
 bool OnRectangle(const std::vector<Vec3d>& local, int axis, const Vec3d& lo, const Vec3d& hi, int first, int last,
@@ -67,9 +67,9 @@ bool OnRectangle(const std::vector<Vec3d>& local, int axis, const Vec3d& lo, con
   return all > 0 && on >= kMinOnSides * all;
 }
 
-// Along `axis`, the longest run of bins whose section is one constant rectangle, when it spans
-// at least kMinBody of the box and leaves kMinBeyond; none when a bin is empty (parts apart
-// along the axis are not grown from one another).
+// Along `axis`, of the runs of bins whose section is one constant rectangle, spanning at least
+// kMinBody of the box and leaving kMinBeyond, the one with the largest box; none when a bin is
+// empty (parts apart along the axis are not grown from one another).
 bool FindBody(const std::vector<Vec3d>& local, int axis, const Vec3d& lo, const Vec3d& hi, Body* body) {
   const double length = hi[axis] - lo[axis];
   const Eigen::Vector2d across_size(hi[(axis + 1) % 3] - lo[(axis + 1) % 3], hi[(axis + 2) % 3] - lo[(axis + 2) % 3]);
