@@ -43,6 +43,10 @@ void LocalBox(const Target& target, const Eigen::Matrix3d& world_from_local, Vec
   }
 }
 
+int BinOf(double x, double lo, double hi, int bins) {
+  return std::clamp(static_cast<int>((x - lo) / (hi - lo) * bins), 0, bins - 1);
+}
+
 Layout PoseLayout(const Target& target, const Eigen::Matrix3d& world_from_local, int slab_axis, double slab_lo,
                   double slab_hi) {
   Vec3d lo, hi;

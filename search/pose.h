@@ -15,6 +15,9 @@ Layout PoseLayout(const Target& target, const Eigen::Matrix3d& world_from_local,
 // The target's box in the frame `world_from_local` (coordinates along its columns).
 void LocalBox(const Target& target, const Eigen::Matrix3d& world_from_local, Vec3d* lo, Vec3d* hi);
 
+// Which of `bins` equal bins over [lo, hi] holds `x` (values outside go to the end bins).
+int BinOf(double x, double lo, double hi, int bins);
+
 // The cube on the box [lo, hi] of the frame `world_from_local` (coordinates along its columns).
 Layout PoseLayoutOnBox(const Eigen::Matrix3d& world_from_local, const Vec3d& lo, const Vec3d& hi);
 

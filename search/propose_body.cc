@@ -41,10 +41,6 @@ struct Section {
   }
 };
 
-int BinOf(double x, double lo, double hi) {
-  return std::clamp(static_cast<int>((x - lo) / (hi - lo) * kBins), 0, kBins - 1);
-}
-
 struct Body {
   double volume = 0;
   Vec3d lo, hi;  // in the pose's frame
@@ -58,7 +54,7 @@ bool OnRectangle(const std::vector<Vec3d>& local, int axis, const Vec3d& lo, con
   const double tolerance = kOnSide * across_size.maxCoeff();
   size_t on = 0, all = 0;
   for (const Vec3d& q : local) {
-    const int b = BinOf(q[axis], lo[axis], hi[axis]);
+    const int b = BinOf(q[axis], lo[axis], hi[axis], kBins);
     if (b < first + kReach || b > last - kReach) continue;
     const Eigen::Vector2d across(q[(axis + 1) % 3], q[(axis + 2) % 3]);
     const double to_side = std::min((across - section.lo).minCoeff(), (section.hi - across).minCoeff());
@@ -75,7 +71,7 @@ bool FindBody(const std::vector<Vec3d>& local, int axis, const Vec3d& lo, const 
   const Eigen::Vector2d across_size(hi[(axis + 1) % 3] - lo[(axis + 1) % 3], hi[(axis + 2) % 3] - lo[(axis + 2) % 3]);
   if (!(length > 0) || !(across_size.minCoeff() > 0)) return false;
   std::vector<Section> bins(kBins);
-  for (const Vec3d& q : local) bins[BinOf(q[axis], lo[axis], hi[axis])].Add(q, axis);
+  for (const Vec3d& q : local) bins[BinOf(q[axis], lo[axis], hi[axis], kBins)].Add(q, axis);
   for (const Section& bin : bins) {
     if (bin.count == 0) return false;
   }

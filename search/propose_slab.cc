@@ -42,7 +42,7 @@ std::vector<Slab> FindSlabs(const Target& target, const Eigen::Matrix3d& world_f
     if (!(hi - lo > 0)) continue;
     std::vector<double> plus(kBins, 0), minus(kBins, 0);
     for (size_t i = 0; i < points.size(); ++i) {
-      const int bin = std::clamp(static_cast<int>((direction.dot(points[i]) - lo) / (hi - lo) * kBins), 0, kBins - 1);
+      const int bin = BinOf(direction.dot(points[i]), lo, hi, kBins);
       const double facing = direction.dot(normals[i]);
       if (facing > 0.9) plus[bin] += 1;
       if (facing < -0.9) minus[bin] += 1;
