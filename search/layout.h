@@ -17,7 +17,7 @@
 namespace opgraph {
 
 struct Layout {
-  std::vector<Json> profile;  // on the 2x2x2 cube: loop cuts along the long axis, loop scales
+  std::vector<Json> profile;  // on the 2x2x2 cube: loop cuts along one axis, loop scales
   std::string profile_name;   // which profile proposal `profile` is, empty when none
   std::vector<Json> grid;     // then: loop cuts across the other axes, loop scales
   // `rotate` and `translate` are null when the pose has none (the search may drop a Rotate or

@@ -43,6 +43,14 @@ void LocalBox(const Target& target, const Eigen::Matrix3d& world_from_local, Vec
   }
 }
 
+std::vector<Vec3d> LocalSamples(const Target& target, const Eigen::Matrix3d& world_from_local) {
+  const Positions<double>& points = target.points();
+  const size_t stride = std::max<size_t>(1, points.size() / 20000);
+  std::vector<Vec3d> local;
+  for (size_t i = 0; i < points.size(); i += stride) local.push_back(world_from_local.transpose() * points[i]);
+  return local;
+}
+
 int BinOf(double x, double lo, double hi, int bins) {
   return std::clamp(static_cast<int>((x - lo) / (hi - lo) * bins), 0, bins - 1);
 }

@@ -15,6 +15,9 @@ Layout PoseLayout(const Target& target, const Eigen::Matrix3d& world_from_local,
 // The target's box in the frame `world_from_local` (coordinates along its columns).
 void LocalBox(const Target& target, const Eigen::Matrix3d& world_from_local, Vec3d* lo, Vec3d* hi);
 
+// The target's samples in the frame `world_from_local`, at most about 20,000 (every k-th).
+std::vector<Vec3d> LocalSamples(const Target& target, const Eigen::Matrix3d& world_from_local);
+
 // Which of `bins` equal bins over [lo, hi] holds `x` (values outside go to the end bins).
 int BinOf(double x, double lo, double hi, int bins);
 

@@ -19,12 +19,17 @@ namespace opgraph {
 // Subdivision (level 2) at the end of the structure.
 std::vector<Round> ProposeSmoothing(const Layout& best);
 
-// Profiles along the long axis, simplest first: a waist or bulge (two loops scaled together),
+// The axes a profile is proposed along: the long axis, and the axis across which the section
+// changes most on all sides at once (`section_changes`, search/section_changes.h) when it
+// clearly does: a vase or a waisted box need not be longest along their profile.
+std::vector<int> ProfileAxes(const Layout& best, const Vec3d& section_changes);
+
+// Profiles along ProfileAxes (alternatives of one decision), simplest first: a waist or bulge (two loops scaled together),
 // a pinch between two end sections (the inner two of four), the end loops apart, then one
 // scale per loop; each also with Subdivision (a round form, a barrel or a vase, is a profile
 // on a subdivided cage, and neither alone lowers the loss much). A richer profile replaces a
 // simpler one only when it pays for its extra ops.
-std::vector<Round> ProposeProfiles(const Layout& best);
+std::vector<Round> ProposeProfiles(const Layout& best, const Vec3d& section_changes);
 
 // Stepped or tilted profiles: a loop group's scale replaced by EdgeLoopAffineRotate or
 // EdgeLoopAffineTranslate (the two groups with the most residual near them), then either added

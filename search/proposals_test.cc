@@ -250,7 +250,7 @@ TEST(Proposals, LoopMovesOnTheProfileNearTheResidual) {
   const auto target = MakeTarget({build::LoopCut(Axis::kZ, 2, Vec3d::Zero()), build::EdgeLoopTranslate(upper, Vec3d(0.5, 0, 0)),
                                   build::GlobalScale(Vec3d(0.5, 0.5, 2))});
   Layout profiled = PoseLayoutOnBox(Eigen::Matrix3d::Identity(), Vec3d(-0.5, -0.5, -2), Vec3d(1.0, 0.5, 2));
-  ASSERT_FALSE(ProposeProfiles(profiled)[2].alternatives[0](&profiled).empty());  // x2, each loop scaled
+  ASSERT_FALSE(ProposeProfiles(profiled, Vec3d::Zero())[2].alternatives[0](&profiled).empty());  // x2, each loop scaled
   const std::vector<Round> rounds = ProposeLoopMoves(profiled, ComputeFaceResiduals(*target, profiled));
   ASSERT_FALSE(rounds.empty());
   EXPECT_EQ(ExpectAllEvaluate(profiled, rounds), 5 * static_cast<int>(rounds.size()));  // a shift, four tilts
@@ -287,7 +287,7 @@ TEST(Proposals, FacetRidgeOnTheFaceBelowIt) {
 TEST(Proposals, EveryStructuredFamilyEvaluates) {
   const Layout pose = PoseLayoutOnBox(Eigen::Matrix3d::Identity(), Vec3d(-1, -0.5, -2), Vec3d(1, 0.5, 2));
   EXPECT_EQ(ExpectAllEvaluate(pose, ProposeSmoothing(pose)), 1);
-  EXPECT_EQ(ExpectAllEvaluate(pose, ProposeProfiles(pose)), 14);  // 7 profiles, each also subdivided
+  EXPECT_EQ(ExpectAllEvaluate(pose, ProposeProfiles(pose, Vec3d::Zero())), 14);  // 7 profiles, each also subdivided
   EXPECT_EQ(ExpectAllEvaluate(pose, ProposeDeforms(pose)), 12);   // along the long axis Z
   EXPECT_EQ(ExpectAllEvaluate(pose, ProposeRidges(pose)), 12);    // axis pairs and sides
   EXPECT_EQ(ExpectAllEvaluate(pose, ProposeHoles(pose)), 9);
@@ -309,7 +309,7 @@ TEST(Proposals, EveryStructuredFamilyEvaluates) {
   EXPECT_TRUE(ProposePoseDrops(both).empty());
   // The profile follows the long axis.
   Layout profiled = pose;
-  ProposeProfiles(pose)[0].alternatives[0](&profiled);
+  ProposeProfiles(pose, Vec3d::Zero())[0].alternatives[0](&profiled);
   EXPECT_EQ(profiled.profile[0]["params"]["axis"], "Z");
 }
 

@@ -21,15 +21,6 @@ constexpr double kMinBody = 0.2, kMinBeyond = 0.05;
 // A box's section: this fraction of its samples within kOnSide of the box across from a side.
 constexpr double kMinOnSides = 0.95, kOnSide = 0.01;
 
-// The target's samples in the pose's frame, at most about 20,000.
-std::vector<Vec3d> LocalSamples(const Target& target, const Eigen::Matrix3d& world_from_local) {
-  const Positions<double>& points = target.points();
-  const size_t stride = std::max<size_t>(1, points.size() / 20000);
-  std::vector<Vec3d> local;
-  for (size_t i = 0; i < points.size(); i += stride) local.push_back(world_from_local.transpose() * points[i]);
-  return local;
-}
-
 // The box of a set of samples across `axis` (the other two coordinates).
 struct Section {
   Eigen::Vector2d lo = Eigen::Vector2d::Constant(std::numeric_limits<double>::infinity());

@@ -12,6 +12,7 @@
 #include "search/finish.h"
 #include "search/pose.h"
 #include "search/proposals.h"
+#include "search/section_changes.h"
 
 namespace opgraph {
 namespace {
@@ -100,7 +101,8 @@ class StagedSearch {
 
   Trial Smoothing(Trial best) { return ConsiderRounds(&evaluator_, "smooth", best, ProposeSmoothing(best.layout)); }
   Trial Profiles(Trial best) {
-    return Resolution(ConsiderRounds(&evaluator_, "profile", best, ProposeProfiles(best.layout)));
+    const Vec3d changes = SectionChanges(LocalSamples(target_, best.layout.world_from_local));
+    return Resolution(ConsiderRounds(&evaluator_, "profile", best, ProposeProfiles(best.layout, changes)));
   }
   // The profile's loop count, once a profile or a deformation has made it matter.
   Trial Resolution(Trial best) { return ConsiderRounds(&evaluator_, "resolution", best, ProposeLoopCounts(best.layout)); }
