@@ -29,4 +29,14 @@ std::vector<Json> LoopCutGrid(int first_axis, int second_axis, int first_expect,
   return grid;
 }
 
+std::vector<Json> RaisedRidge(int cut_axis, int up_axis, int up_sign, const Vec3d& half_extent, double raise) {
+  build::DisplaceGroup raised;
+  raised.verts.box.lo[cut_axis] = -0.25 * half_extent[cut_axis];
+  raised.verts.box.hi[cut_axis] = 0.25 * half_extent[cut_axis];
+  (up_sign > 0 ? raised.verts.box.lo : raised.verts.box.hi)[up_axis] = up_sign * 0.5 * half_extent[up_axis];
+  raised.offset = Vec3d::Zero();
+  raised.offset[up_axis] = up_sign * raise;
+  return {build::LoopCut(static_cast<build::Axis>(cut_axis), 1, Vec3d::Zero()), build::VertexDisplace({raised})};
+}
+
 }  // namespace opgraph

@@ -20,4 +20,9 @@ std::vector<Json> LoopCutWithScales(int axis, int cuts, int expect, std::vector<
 std::vector<Json> LoopCutGrid(int first_axis, int second_axis, int first_expect,
                               const Eigen::Vector2d& spread = Eigen::Vector2d::Constant(1.0 / 3));
 
+// A ridge on the scaled cube (half extents `half_extent`): a loop cut across `cut_axis`, and its
+// two vertices on the `up_sign` side of `up_axis` moved along it by up_sign * `raise` (a gable
+// roof's ridge line).
+std::vector<Json> RaisedRidge(int cut_axis, int up_axis, int up_sign, const Vec3d& half_extent, double raise);
+
 }  // namespace opgraph

@@ -204,7 +204,8 @@ class StagedSearch {
   // best first (the pose itself among them when it scores so).
   std::vector<Branch> ChooseMainForms(const Trial& start) {
     const std::pair<const char*, Stage> stages[] = {
-        {"slab", &StagedSearch::Slab},     {"body", &StagedSearch::Bodies}, {"profile", &StagedSearch::Profiles},
+        {"slab", &StagedSearch::Slab},     {"body", &StagedSearch::Bodies}, {"roof", &StagedSearch::Roofs},
+        {"profile", &StagedSearch::Profiles},
         {"deform", &StagedSearch::Deforms}, {"ridge", &StagedSearch::Ridges}, {"hole", &StagedSearch::Holes},
         {"detail", &StagedSearch::RepeatDetails}, {"bevel", &StagedSearch::Bevels}, {"mirror", &StagedSearch::Mirror}};
     std::vector<Task> tasks;
@@ -268,6 +269,14 @@ class StagedSearch {
   Trial Bodies(Trial best) {
     if (!evaluator_.InBudget()) return best;
     return Grow("body", best, ProposeBoxBodies(target_, best.layout), false);
+  }
+
+  // A roof on walls: the walls' box with its ridge, fitted first (the roof explains the rest but
+  // for what grows from it), then its extrusions, judged against the best sequence as a whole.
+  // A main form only.
+  Trial Roofs(Trial best) {
+    if (!evaluator_.InBudget()) return best;
+    return Grow("roof", best, ProposeRoofs(target_, best.layout), true);
   }
 
   // A mirrored pair: the part fitted, then its extrusions, judged against the best sequence as
