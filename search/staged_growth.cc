@@ -1,0 +1,96 @@
+// The stages that grow a new start and the repeated details (search/staged_search.h).
+#include <cmath>
+
+#include "search/staged_search.h"
+
+namespace opgraph {
+
+Trial StagedSearch::Details(Trial best) {
+  const Trial extruded = Extrusions(best);
+  std::vector<ResidualCluster> interior;
+  FindResidualClusters(target_, best.layout, &interior);
+  Trial cut = ConsiderRounds(&evaluator_, "cut", best, ProposeThroughHoles(best.layout, interior));
+  if (cut.layout.NumOps() == best.layout.NumOps()) return extruded;
+  cut = Extrusions(cut);
+  const bool keep_cut = Score(best, cut) < Score(best, extruded);
+  evaluator_.Note(std::string("cut: kept the line ") + (keep_cut ? "with" : "without") + " the cut");
+  return keep_cut ? cut : extruded;
+}
+
+Trial StagedSearch::RepeatDetails(Trial best) {
+  for (int round = 0; round < 6 && evaluator_.InBudget(); ++round) {
+    const double before = best.loss;
+    best = Details(best);
+    if (!(best.loss < before)) break;
+  }
+  return best;
+}
+
+Trial StagedSearch::Grids(Trial best) {
+  if (!evaluator_.InBudget()) return best;
+  const std::vector<Expansion> grids = ProposeGrids(best.layout);
+  const std::vector<Trial> fitted = evaluator_.FitAll(Layouts(grids));
+  for (size_t i = 0; i < grids.size(); ++i) {
+    const Expansion& grid = grids[i];
+    if (!evaluator_.InBudget()) break;
+    Trial trial = fitted[i];
+    if (!trial.ok) continue;
+    evaluator_.Log("grid", best, trial, false, grid.what + " (before its extrusions)");
+    const size_t details_before = trial.layout.details.size();
+    trial = RepeatDetails(trial);
+    const int added = trial.layout.NumOps() - best.layout.NumOps();
+    const bool accept = trial.layout.details.size() > details_before &&
+                        trial.loss < best.loss * Price(evaluator_.options(), added);
+    evaluator_.Log("grid", best, trial, accept, grid.what + " with its extrusions");
+    if (accept) best = trial;
+  }
+  return best;
+}
+
+Trial StagedSearch::Slab(Trial best) {
+  if (slab_tried_ || !evaluator_.InBudget()) return best;
+  slab_tried_ = true;
+  return Grow("slab", best, ProposeSlabs(target_, best.layout), false);
+}
+
+Trial StagedSearch::Bodies(Trial best) {
+  if (!evaluator_.InBudget()) return best;
+  return Grow("body", best, ProposeBoxBodies(target_, best.layout), false);
+}
+
+Trial StagedSearch::Roofs(Trial best) {
+  if (!evaluator_.InBudget()) return best;
+  return Grow("roof", best, ProposeRoofs(target_, best.layout), true);
+}
+
+Trial StagedSearch::Mirror(Trial best) {
+  if (mirror_tried_ || !evaluator_.InBudget()) return best;
+  mirror_tried_ = true;
+  return Grow("mirror", best, ProposeMirrors(target_, best.layout), true);
+}
+
+Trial StagedSearch::Grow(const std::string& stage, const Trial& best, const std::vector<Expansion>& starts, bool fit_first) {
+  Trial chosen = best;
+  const std::vector<Trial> fitted = fit_first ? evaluator_.FitAll(Layouts(starts)) : std::vector<Trial>();
+  for (size_t i = 0; i < starts.size(); ++i) {
+    const Expansion& start = starts[i];
+    if (!evaluator_.InBudget()) break;
+    Trial trial;
+    trial.layout = start.layout;
+    trial.ok = true;
+    if (fit_first) {
+      trial = fitted[i];
+      if (!trial.ok) continue;
+      trial = Smoothing(trial);
+    }
+    trial = RepeatDetails(trial);
+    trial.ok = std::isfinite(trial.loss);
+    const int added = trial.layout.NumOps() - chosen.layout.NumOps();
+    const bool accept = trial.ok && trial.loss < chosen.loss * Price(evaluator_.options(), added);
+    evaluator_.Log(stage, chosen, trial, accept, start.what + " and its extrusions");
+    if (accept) chosen = trial;
+  }
+  return chosen;
+}
+
+}  // namespace opgraph
