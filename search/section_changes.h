@@ -7,6 +7,8 @@
 
 namespace opgraph {
 
+constexpr int kSectionBins = 24;
+
 // For each axis of a frame, how far the section across it grows or shrinks on all four sides
 // at once, as a loop's scale does (an Extrude or a boss moves one or two sides): along the axis
 // in kSectionBins bins (the end bins left out: end faces and rims), each side's half-width
@@ -15,7 +17,5 @@ namespace opgraph {
 // is the largest over its bins (0.3: a loop 30% wider or narrower than the usual section).
 // `local`: #samples points in the frame's coordinates.
 Vec3d SectionChanges(const std::vector<Vec3d>& local);
-
-constexpr int kSectionBins = 24;
 
 }  // namespace opgraph
