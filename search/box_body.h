@@ -1,5 +1,5 @@
 // The largest run of a target where its section across an axis is one constant rectangle: a
-// box body that the rest of the shape grows from (search/propose_body.cc, propose_roof.cc).
+// box body that the rest of the shape grows from (search/propose_body.cc).
 #pragma once
 
 #include <utility>

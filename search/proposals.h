@@ -116,10 +116,6 @@ std::vector<Expansion> ProposeSlabs(const Target& target, const Layout& pose);
 // be boxes). Largest body first. Empty when no axis has one, or a part stands apart along it.
 std::vector<Expansion> ProposeBoxBodies(const Target& target, const Layout& pose);
 
-// A roof on walls (a house, a wedge-topped block): a box body that stands on one end of the
-// box along an axis, the cube on it, and a ridge raised from its other end to the box's end,
-// the ridge line along the axis the target keeps whole halfway up the rest. Largest body first.
-std::vector<Expansion> ProposeRoofs(const Target& target, const Layout& pose);
 
 // A symmetric target in two parts (a pair of wings, of legs, of towers): the cube on the part
 // beyond each symmetry plane of the pose's frame that has a gap around it, mirrored there.

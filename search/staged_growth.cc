@@ -58,11 +58,6 @@ Trial StagedSearch::Bodies(Trial best) {
   return Grow("body", best, ProposeBoxBodies(target_, best.layout), false);
 }
 
-Trial StagedSearch::Roofs(Trial best) {
-  if (!evaluator_.InBudget()) return best;
-  return Grow("roof", best, ProposeRoofs(target_, best.layout), true);
-}
-
 Trial StagedSearch::Mirror(Trial best) {
   if (mirror_tried_ || !evaluator_.InBudget()) return best;
   mirror_tried_ = true;

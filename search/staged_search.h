@@ -1,7 +1,7 @@
 // The staged search behind RecoverSequence (search/zero_shot.h): the order in which proposal
 // families are asked, the main-form choice and the lookahead of structures that only pay
 // through the extrusions they enable. Its main line is in zero_shot.cc, the stages that grow a
-// new start (a slab, a body, a roof, a mirrored part, a grid) in staged_growth.cc.
+// new start (a slab, a body, a mirrored part, a grid) in staged_growth.cc.
 #pragma once
 
 #include <functional>
@@ -132,11 +132,6 @@ class StagedSearch {
   // would pull it back to the box), with the extrusions that grow the rest, judged against the
   // best sequence as a whole. A main form only.
   Trial Bodies(Trial best);
-
-  // A roof on walls: the walls' box with its ridge, fitted first (the roof explains the rest but
-  // for what grows from it), then its extrusions, judged against the best sequence as a whole.
-  // A main form only.
-  Trial Roofs(Trial best);
 
   // A mirrored pair: the part fitted, then its extrusions, judged against the best sequence as
   // a whole. Tried once.
