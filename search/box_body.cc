@@ -9,6 +9,8 @@
 namespace opgraph {
 namespace {
 
+constexpr int kBodyBins = 50;
+
 // A bin's section is constant when the bins kReach either side of it differ by under this
 // fraction of the box across (a box's sides are planes; an Extrude's narrowed cap makes its
 // sides taper).
@@ -48,8 +50,10 @@ bool OnRectangle(const std::vector<Vec3d>& local, int axis, const Vec3d& lo, con
   return all > 0 && on >= kMinOnSides * all;
 }
 
-}  // namespace
-
+// Along `axis`, binned in kBodyBins over the samples' box [lo, hi]: of the runs of bins whose
+// section is one constant rectangle (the samples on its sides), spanning at least a fifth of
+// the box and leaving at least a twentieth, the one with the largest box. False when there is
+// none or a bin is empty (parts apart along the axis are not grown from one another).
 bool FindBoxBody(const std::vector<Vec3d>& local, int axis, const Vec3d& lo, const Vec3d& hi, BoxBody* body) {
   const double length = hi[axis] - lo[axis];
   const Eigen::Vector2d across_size(hi[(axis + 1) % 3] - lo[(axis + 1) % 3], hi[(axis + 2) % 3] - lo[(axis + 2) % 3]);
@@ -93,6 +97,8 @@ bool FindBoxBody(const std::vector<Vec3d>& local, int axis, const Vec3d& lo, con
   return found;
 }
 
+
+}  // namespace
 
 std::vector<std::pair<int, BoxBody>> FindBoxBodies(const std::vector<Vec3d>& local, const Vec3d& lo, const Vec3d& hi) {
   std::vector<std::pair<int, BoxBody>> bodies;

@@ -116,7 +116,6 @@ std::vector<Expansion> ProposeSlabs(const Target& target, const Layout& pose);
 // be boxes). Largest body first. Empty when no axis has one, or a part stands apart along it.
 std::vector<Expansion> ProposeBoxBodies(const Target& target, const Layout& pose);
 
-
 // A symmetric target in two parts (a pair of wings, of legs, of towers): the cube on the part
 // beyond each symmetry plane of the pose's frame that has a gap around it, mirrored there.
 // Empty when the target is not such a pair.
