@@ -197,34 +197,6 @@ TEST(EstimatePointNormals, AConcavePartIsOrientedOutwards) {
   EXPECT_LT(wrong / n, 0.01);
 }
 
-// Beside a crease a point's own neighbourhood spans two faces, and its plane (PCA) tilts
-// toward the other face: the normal a point-to-plane fit and the metrics take there is wrong.
-TEST(EstimatePointNormals, NormalsStaySharpBesideEdges) {
-  Positions<double> points, truth;
-  SampleT(&points, &truth);
-  const Positions<double> normals = EstimatePointNormals(points, 16);
-  const PointTree tree(points);
-  std::vector<size_t> near;
-  std::vector<double> squared;
-  int beside_edges = 0, sharp = 0;
-  for (size_t i = 0; i < points.size(); ++i) {
-    tree.KNearest(points[i], 16, &near, &squared);
-    // Points whose neighbourhood crosses a crease (the case PCA blurs).
-    bool crosses = false;
-    for (size_t j : near) crosses = crosses || truth[j].dot(truth[i]) < 0.9;
-    if (!crosses) {
-      EXPECT_GT(normals[i].dot(truth[i]), 0.99) << i;  // flat parts keep their plane
-      continue;
-    }
-    ++beside_edges;
-    sharp += normals[i].dot(truth[i]) > std::cos(5 * M_PI / 180);
-  }
-  ASSERT_GT(beside_edges, 1000);
-  // 4114 of 4149 within 5 degrees; each point's own neighbourhood's plane (PCA, as before):
-  // 575 of 4149.
-  EXPECT_GT(sharp, 0.97 * beside_edges);
-}
-
 struct BadFile {
   const char* name;
   const char* contents;  // nullptr: the file does not exist

@@ -1,6 +1,7 @@
 #include "io/read_point_cloud.h"
 
 #include <pcl/common/io.h>
+#include <pcl/features/normal_3d.h>
 #include <pcl/io/pcd_io.h>
 #include <pcl/io/ply_io.h>
 #include <pcl/point_types.h>
@@ -13,7 +14,6 @@
 #include <stdexcept>
 #include <vector>
 
-#include "io/crease_normals.h"
 #include "io/orient_normals.h"
 #include "io/pcd_header.h"
 #include "io/read_in_child_process.h"
@@ -104,15 +104,26 @@ InputGeometry ReadXyzPoints(const std::string& path) {
 }
 
 Positions<double> EstimatePointNormals(const Positions<double>& points, int k) {
+  auto cloud = std::make_shared<pcl::PointCloud<pcl::PointXYZ>>();
+  cloud->reserve(points.size());
   Vec3d centroid = Vec3d::Zero();
-  for (const Vec3d& p : points) centroid += p;
+  for (const Vec3d& p : points) {
+    cloud->push_back(pcl::PointXYZ(static_cast<float>(p.x()), static_cast<float>(p.y()), static_cast<float>(p.z())));
+    centroid += p;
+  }
   centroid /= std::max<size_t>(points.size(), 1);
-  Positions<double> result = CreasePreservingNormals(points, k);
+  pcl::NormalEstimation<pcl::PointXYZ, pcl::Normal> estimation;
+  estimation.setInputCloud(cloud);
+  estimation.setSearchMethod(std::make_shared<pcl::search::KdTree<pcl::PointXYZ>>());
+  estimation.setKSearch(std::min<int>(k, static_cast<int>(points.size())));
+  pcl::PointCloud<pcl::Normal> normals;
+  estimation.compute(normals);
+  Positions<double> result(points.size());
   for (size_t i = 0; i < points.size(); ++i) {
-    Vec3d& n = result[i];
+    Vec3d n(normals[i].normal_x, normals[i].normal_y, normals[i].normal_z);
     if (!n.allFinite() || n.norm() < 1e-12) n = (points[i] - centroid).normalized();
     if (n.dot(points[i] - centroid) < 0) n = -n;
-    n.normalize();
+    result[i] = n.normalized();
   }
   OrientNormalsConsistently(points, k, &result);
   return result;
