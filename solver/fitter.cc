@@ -1,9 +1,5 @@
 #include "solver/fitter.h"
 
-#include <ceres/manifold.h>
-#include <ceres/problem.h>
-#include <ceres/solver.h>
-
 #include <algorithm>
 #include <chrono>
 #include <cmath>
@@ -17,36 +13,6 @@
 #include "solver/fitter_solvers.h"
 
 namespace opgraph {
-
-std::string FitterOptions::Check() const {
-  if (num_output_samples < 10 || num_output_samples > 10000000) return "num_output_samples must be in [10, 1e7]";
-  if (num_target_samples < 0 || num_target_samples > 10000000) return "num_target_samples must be in [0, 1e7]";
-  if (!(output_to_target_weight >= 0) || !(target_to_output_weight >= 0) ||
-      output_to_target_weight + target_to_output_weight <= 0) {
-    return "term weights must be >= 0 and not both 0";
-  }
-  if (!(loss_scale > 0)) return "loss_scale must be > 0";
-  if (!(gate_sparsity_weight >= 0)) return "gate_sparsity_weight must be >= 0";
-  if (!(prune_gate > 0 && prune_gate < 1)) return "prune_gate must be in (0, 1)";
-  if (max_outer_iterations < 1 || max_inner_iterations < 1 || adam_iterations < 1) return "iteration limits must be >= 1";
-  if (!(adam_learning_rate > 0)) return "adam_learning_rate must be > 0";
-  if (!(initial_trust_region_radius > 0)) return "initial_trust_region_radius must be > 0";
-  if (!(min_relative_improvement >= 0)) return "min_relative_improvement must be >= 0";
-  if (num_threads < 1) return "num_threads must be >= 1";
-  if (!(max_seconds >= 0)) return "max_seconds must be >= 0";
-  for (const ParameterRangeRule& rule : domain_rules) {
-    if (!(rule.weight >= 0) || !(rule.lower <= rule.upper)) return "domain rule: need weight >= 0 and lower <= upper";
-  }
-  for (int op : boolean_weight_ops) {
-    if (op < 0) return "boolean_weight_ops: op indices must be >= 0";
-  }
-  for (const BranchChoice& branch : branches) {
-    if (branch.op < 0 || branch.field.empty() || branch.options.size() < 2) {
-      return "branch choice: need op >= 0, a field and >= 2 options";
-    }
-  }
-  return "";
-}
 
 namespace {
 
@@ -89,54 +55,6 @@ double Fitter::CurrentLoss() {
 bool Fitter::Held(const ProgramBlock& block) const {
   return static_cast<int>(block.constant.size()) == block.size || (block.is_gate ? hold_gates_ : hold_params_) ||
          sequence_->IsPinned(static_cast<size_t>(block.op));
-}
-
-std::unique_ptr<ceres::Problem> Fitter::MakeCeresProblem(const Objective& objective) const {
-  ceres::Problem::Options problem_options;
-  problem_options.evaluation_callback = program_.get();
-  problem_options.cost_function_ownership = ceres::DO_NOT_TAKE_OWNERSHIP;
-  problem_options.loss_function_ownership = ceres::DO_NOT_TAKE_OWNERSHIP;
-  auto problem = std::make_unique<ceres::Problem>(problem_options);
-  for (const ProgramBlock& block : program_->blocks()) {
-    problem->AddParameterBlock(block.data, block.size);
-    if (Held(block)) {
-      problem->SetParameterBlockConstant(block.data);
-    } else if (!block.constant.empty()) {
-      problem->SetManifold(block.data, new ceres::SubsetManifold(block.size, block.constant));
-    }
-    if (block.holds_op_params()) {
-      const std::vector<ParamSpec>& specs = sequence_->ops[block.op]->specs();
-      for (int i = 0; i < block.size; ++i) {
-        problem->SetParameterLowerBound(block.data, i, specs[i].lower);
-        problem->SetParameterUpperBound(block.data, i, specs[i].upper);
-      }
-    }
-  }
-  for (const Objective::Term& term : objective.terms) {
-    problem->AddResidualBlock(term.cost.get(), const_cast<ceres::LossFunction*>(term.loss), term.blocks);
-  }
-  return problem;
-}
-
-void Fitter::EvaluateBothWays(ObjectiveEvaluation* own, ObjectiveEvaluation* ceres) {
-  FitCorrespondences correspondences;
-  BuildCorrespondences(options_.seed, &correspondences);
-  Objective objective;
-  MakeObjective(correspondences, &objective);
-  program_->PrepareForEvaluation(true, true);
-  own->loss = EvaluateObjective(*program_, objective, &own->gradient, scratch_.get());
-  EvaluateNormalEquations(*program_, objective, FindFreeColumns().index, &own->jtj, &own->jtr, scratch_.get());
-  const std::unique_ptr<ceres::Problem> problem = MakeCeresProblem(objective);
-  double cost = 0;
-  ceres::CRSMatrix jacobian;
-  problem->Evaluate(ceres::Problem::EvaluateOptions(), &cost, nullptr, &ceres->gradient, &jacobian);
-  ceres->loss = 2 * cost;
-  for (double& g : ceres->gradient) g *= 2;
-  Eigen::MatrixXd dense = Eigen::MatrixXd::Zero(jacobian.num_rows, jacobian.num_cols);
-  for (int row = 0; row < jacobian.num_rows; ++row) {
-    for (int k = jacobian.rows[row]; k < jacobian.rows[row + 1]; ++k) dense(row, jacobian.cols[k]) = jacobian.values[k];
-  }
-  ceres->jtj = dense.transpose() * dense;
 }
 
 FreeColumns Fitter::FindFreeColumns() const {
@@ -187,66 +105,6 @@ double Fitter::Solve(const FitCorrespondences& correspondences, double sparsity_
   }
   return SolveWithAdam(program_.get(), objective, FindFreeColumns(), options_.adam_iterations,
                        options_.adam_learning_rate, deadline_, &summary->inner_iterations, scratch_.get());
-}
-
-double Fitter::SolveWithCeres(const Objective& objective, FitSummary* summary) {
-  const std::unique_ptr<ceres::Problem> problem = MakeCeresProblem(objective);
-  ceres::Solver::Options solver_options;
-  solver_options.minimizer_type = ceres::TRUST_REGION;
-  solver_options.trust_region_strategy_type = ceres::LEVENBERG_MARQUARDT;
-  solver_options.linear_solver_type = ceres::DENSE_QR;
-  solver_options.max_num_iterations = options_.max_inner_iterations;
-  solver_options.num_threads = options_.num_threads;
-  solver_options.logging_type = ceres::SILENT;
-  solver_options.function_tolerance = 1e-8;
-  solver_options.parameter_tolerance = 1e-10;
-  solver_options.initial_trust_region_radius = trust_region_radius_;
-  if (deadline_.limited()) solver_options.max_solver_time_in_seconds = deadline_.SecondsLeft();
-  ceres::Solver::Summary solver_summary;
-  ceres::Solve(solver_options, problem.get(), &solver_summary);
-  summary->inner_iterations += static_cast<int>(solver_summary.iterations.size()) - 1;
-  if (!solver_summary.iterations.empty()) {
-    trust_region_radius_ = std::max(options_.initial_trust_region_radius,
-                                    std::min(1e16, solver_summary.iterations.back().trust_region_radius));
-  }
-  program_->PrepareForEvaluation(false, true);  // leave the cache at the solution
-  return 2 * solver_summary.final_cost;
-}
-
-Fitter::Reproduction Fitter::CheckReproduction() const {
-  try {
-    Sequence copy = ParseSequence(SequenceToJson(*sequence_));
-    for (size_t k = 0; k < copy.ops.size(); ++k) copy.gates[k] = program_->Gate(static_cast<int>(k));
-    const std::vector<Mesh> steps = EvaluateSequence(&copy);
-    const Mesh& result = steps.empty() ? copy.StartMesh() : steps.back();
-    if (result.faces != program_->faces() || result.vertices.size() != program_->positions().size()) {
-      return Reproduction::kDifferent;
-    }
-    const double tolerance = 1e-7 / target_.scale();
-    for (size_t v = 0; v < result.vertices.size(); ++v) {
-      if (!((result.vertices[v] - program_->positions()[v]).norm() <= tolerance)) return Reproduction::kDifferent;
-    }
-    return Reproduction::kSame;
-  } catch (const std::exception&) {
-    return Reproduction::kFails;
-  }
-}
-
-bool Fitter::ResolveTopology() {
-  // A blend of branches is no written sequence; its topology is fixed until CommitBranches.
-  if (program_->num_branches() > 0) return true;
-  const Reproduction reproduction = CheckReproduction();
-  if (reproduction != Reproduction::kDifferent) return reproduction == Reproduction::kSame;
-  // The copy evaluated with these parameters and gates, so the sequence itself will too.
-  const std::vector<double> logits = program_->logits();
-  program_->StoreGates();
-  retired_jacobian_evaluations_ += program_->num_jacobian_evaluations();
-  const std::vector<double> boolean_logits = program_->boolean_logits();
-  program_ = std::make_unique<Program>(sequence_, free_gates_, std::vector<BranchChoice>(), boolean_weight_ops_);
-  program_->set_logits(logits);  // exact gates (the constructor clamps them)
-  program_->set_boolean_logits(boolean_logits);
-  program_->PrepareForEvaluation(false, true);
-  return true;
 }
 
 double Fitter::RunStage(double sparsity_weight, FitSummary* summary) {
@@ -323,26 +181,6 @@ double Fitter::RunStage(double sparsity_weight, FitSummary* summary) {
   ResolveTopology();
   program_->PrepareForEvaluation(false, true);
   return best;
-}
-
-bool Fitter::CommitBranches(FitSummary* summary) {
-  if (program_->num_branches() == 0) return false;
-  for (int b = 0; b < program_->num_branches(); ++b) {
-    const std::vector<double> weights = program_->BranchWeights(b);
-    summary->branch_weights.push_back(weights);
-    summary->branch_choices.push_back(static_cast<int>(std::max_element(weights.begin(), weights.end()) - weights.begin()));
-  }
-  const std::vector<double> logits = program_->logits();
-  const std::vector<double> boolean_logits = program_->boolean_logits();
-  program_->CommitBranches();
-  retired_jacobian_evaluations_ += program_->num_jacobian_evaluations();
-  program_ = std::make_unique<Program>(sequence_, free_gates_, std::vector<BranchChoice>(), boolean_weight_ops_);
-  program_->set_logits(logits);  // exact gates (the constructor clamps them)
-  program_->set_boolean_logits(boolean_logits);
-  if (options_.progress) {
-    *options_.progress << "fit: committed " << summary->branch_choices.size() << " branch choice(s); polishing\n";
-  }
-  return true;
 }
 
 void Fitter::Finalise(FitSummary* summary) {

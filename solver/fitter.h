@@ -178,6 +178,9 @@ class Fitter {
   // Rebuilds the program when the topology passes now resolve differently. Returns whether the
   // program then matches the sequence (false: the sequence does not evaluate here).
   bool ResolveTopology();
+  // A program without branches over the sequence as it now stands, with the replaced one's
+  // gates and Boolean weights exactly.
+  void RebuildProgram();
 
   const Target& target_;
   Sequence* sequence_;
@@ -186,10 +189,10 @@ class Fitter {
   std::unique_ptr<ObjectiveScratch> scratch_;
   double sparsity_weight_ = 0;
   double trust_region_radius_ = 0;
-  bool hold_params_ = false, hold_gates_ = false;
+  bool hold_params_ = false, hold_gates_ = false;  // blocks held constant in the current stage
   bool free_gates_ = false;
   std::vector<int> boolean_weight_ops_;  // cleared when the gate finalisation renumbers ops
-  int retired_jacobian_evaluations_ = 0;  // by programs replaced during the fit  // blocks held constant in the current stage
+  int retired_jacobian_evaluations_ = 0;  // by programs replaced during the fit
   uint64_t update_count_ = 0;
   double start_time_ = 0;
   Deadline deadline_;  // FitterOptions::max_seconds from Fit()'s start
