@@ -154,6 +154,9 @@ class Program : public ceres::EvaluationCallback {
     std::vector<Positions<JetT>> jet_outputs;
     bool mixed = false;  // options of different topology, side by side in the output
   };
+  // The branch choices' variants, prepared on their ops' inputs (`meshes`: each op's output),
+  // at uniform weights. Throws std::invalid_argument as the constructor says.
+  void AddBranches(const std::vector<BranchChoice>& branches, const std::vector<Mesh>& meshes);
   // Op k's output: its own geometry pass, or the blend of its branch's variants.
   void EvaluateOp(int k, const double* params, const double& gate, const Positions<double>& in,
                   Positions<double>* out);
