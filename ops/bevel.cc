@@ -1,15 +1,12 @@
 #include "ops/bevel.h"
 
-#include <Eigen/Dense>
 #include <algorithm>
-#include <limits>
+#include <cmath>
 
 #include "core/geometry.h"
 #include "ops/halfedge_topology.h"
 
 namespace opgraph {
-
-using bevel::V3;
 
 std::string BevelOp::Unsupported(int beveled, int vertex, const std::string& why) {
   return "Bevel: vertex with " + std::to_string(beveled) + " beveled edges not supported (vertex " +

@@ -104,6 +104,8 @@ class BevelOp : public OpBase<BevelOp> {
   void ApplyNoting(const T* p, const T& gate, const Positions<T>& in, Positions<T>* out, double* margin) const;
   int Slot(const BevVert& bv, int i, int j, int k) const;
   int OutputId(const BevVert& bv, int i, int j, int k) const;
+  // The one-line error for a vertex the port does not support.
+  static std::string Unsupported(int beveled, int vertex, const std::string& why);
 
   // Prepare's steps, in order (Blender's bevel: edge tagging, build_boundary with the vertex
   // mesh kinds, adjust_offsets' chains, tri_corner_test on the adjusted widths, the rebuilt and
@@ -113,7 +115,6 @@ class BevelOp : public OpBase<BevelOp> {
   // Input vertex v's fan of edge halves and its boundary vertices, appended to bev_verts_.
   void AddBevVert(const Mesh& input, const HalfedgeTopology& topology, const std::vector<Vec3d>& normals,
                   const std::vector<bool>& beveled, int v);
-  static std::string Unsupported(int beveled, int vertex, const std::string& why);
   void ChooseVertexMeshKind(const Mesh& input, const std::vector<Vec3d>& normals, BevVert* bv);
   void LinkLoopSlideChains();
   void KeepEqualWidthCubeCorners(const Mesh& input);

@@ -97,7 +97,6 @@ bool FindBoxBody(const std::vector<Vec3d>& local, int axis, const Vec3d& lo, con
   return found;
 }
 
-
 }  // namespace
 
 std::vector<std::pair<int, BoxBody>> FindBoxBodies(const std::vector<Vec3d>& local, const Vec3d& lo, const Vec3d& hi) {
