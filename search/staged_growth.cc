@@ -1,5 +1,4 @@
 // The stages that grow a new start and the repeated details (search/staged_search.h).
-#include <algorithm>
 #include <cmath>
 
 #include "search/staged_search.h"
@@ -84,7 +83,6 @@ Trial StagedSearch::Grow(const std::string& stage, const Trial& best, const std:
     const int added = trial.layout.NumOps() - chosen.layout.NumOps();
     const bool accept = trial.ok && trial.loss < chosen.loss * Price(evaluator_.options(), added);
     evaluator_.Log(stage, chosen, trial, accept, start.what + " and its extrusions");
-    if (!accept && trial.ok && trial.loss < std::min(chosen.loss, lowest_rejected_.loss)) lowest_rejected_ = trial;
     if (accept) chosen = trial;
   }
   return chosen;

@@ -115,8 +115,7 @@ class StagedSearch {
   // blocks the extrusion that explains a boss; a small bend blocks a profile), so it is made
   // best-first: every stage runs from the pose (a rounded box is a Bevel of it), each result
   // scored by its loss after the price of its ops. Returns the best `beam_width` of them,
-  // best first (the pose itself among them when it scores so), and, second, the lowest-loss
-  // candidate when its price left it out (a lookahead line: the ops that make it pay come later).
+  // best first (the pose itself among them when it scores so).
   std::vector<Branch> ChooseMainForms(const Trial& start);
 
   // Loop-cut grids give faces where extrusions can start. Cuts alone do not change the surface,
@@ -152,9 +151,6 @@ class StagedSearch {
   const Target& target_;
   Evaluator evaluator_;
   bool slab_tried_ = false, mirror_tried_ = false;
-  // The lowest-loss start a Grow stage turned down for the price of its ops (a grid under a
-  // slab's legs, before the back that makes it pay): a lookahead line for the main-form beam.
-  Trial lowest_rejected_;
 };
 
 }  // namespace opgraph

@@ -100,25 +100,13 @@ std::vector<StagedSearch::Branch> StagedSearch::ChooseMainForms(const Trial& sta
   std::vector<Branch> candidates = {{start, "the pose alone", start.loss}};
   for (const auto& [name, stage] : stages) {
     if (!evaluator_.InBudget()) break;
-    lowest_rejected_ = Trial();
     const Trial trial = (this->*stage)(start);
-    if (lowest_rejected_.ok) {
-      candidates.push_back({lowest_rejected_, std::string("the ") + name + " stage's lowest-loss start",
-                            Score(start, lowest_rejected_)});
-    }
     if (trial.layout.NumOps() == start.layout.NumOps()) continue;  // the stage added nothing
     candidates.push_back({trial, std::string("the ") + name + " stage's result", Score(start, trial)});
   }
-  lowest_rejected_ = Trial();
   std::stable_sort(candidates.begin(), candidates.end(),
                    [](const Branch& a, const Branch& b) { return a.score < b.score; });
-  const auto lowest_loss = std::min_element(candidates.begin(), candidates.end(),
-                                            [](const Branch& a, const Branch& b) { return a.trial.loss < b.trial.loss; });
-  const size_t width = evaluator_.options().beam_width;
-  if (static_cast<size_t>(lowest_loss - candidates.begin()) >= width && width > 1) {
-    std::rotate(candidates.begin() + 1, lowest_loss, lowest_loss + 1);  // second, after the best-scored
-  }
-  candidates.resize(std::min(candidates.size(), width));
+  candidates.resize(std::min<size_t>(candidates.size(), evaluator_.options().beam_width));
   if (candidates.front().trial.layout.NumOps() != start.layout.NumOps()) {
     evaluator_.Log("main form", start, candidates.front().trial, true, candidates.front().name);
   }
