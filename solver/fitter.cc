@@ -86,13 +86,11 @@ double Fitter::Solve(const FitCorrespondences& correspondences, double sparsity_
   auto carry_over = [&](double radius) {
     trust_region_radius_ = std::max(options_.initial_trust_region_radius, std::min(1e16, radius));
   };
-  const double initial_radius = std::min(trust_region_radius_, trust_region_cap_);
   switch (options_.optimizer) {
     case Optimizer::kLm: {
       DenseLmOptions lm;
       lm.max_iterations = options_.max_inner_iterations;
-      lm.initial_radius = initial_radius;
-      lm.max_radius = trust_region_cap_;
+      lm.initial_radius = trust_region_radius_;
       lm.deadline = &deadline_;
       DenseLmSummary lm_summary;
       const double loss = SolveWithDenseLm(program_.get(), objective, FindFreeColumns(), lm, &lm_summary, scratch_.get());
@@ -101,7 +99,7 @@ double Fitter::Solve(const FitCorrespondences& correspondences, double sparsity_
       return loss;
     }
     case Optimizer::kCeres:
-      return SolveWithCeres(objective, initial_radius, summary);
+      return SolveWithCeres(objective, summary);
     case Optimizer::kAdam:
       break;
   }
@@ -132,10 +130,6 @@ double Fitter::RunStage(double sparsity_weight, FitSummary* summary) {
   }
   double best = std::numeric_limits<double>::infinity(), best_reproducible = best;
   std::vector<double> best_values = snapshot(), best_reproducible_values;
-  int step_backs_left = options_.optimizer == Optimizer::kAdam ? 0 : options_.max_step_backs;
-  trust_region_cap_ = 1e16;
-  bool stepped_back = false;
-  double radius_before_solve = trust_region_radius_;
   for (int update = 0; update < options_.max_outer_iterations; ++update) {
     const double started = Now();
     // Discrete choices that depend on the parameters (a Boolean's intersection, the elements a
@@ -151,7 +145,6 @@ double Fitter::RunStage(double sparsity_weight, FitSummary* summary) {
     const double fresh = EvaluateObjective(*program_, objective, nullptr, scratch_.get());
     summary->history.push_back({Now() - start_time_, summary->inner_iterations, fresh});
     const bool improving = fresh < best * (1 - options_.min_relative_improvement);
-    const bool worse = fresh > best || (!reproducible && !best_reproducible_values.empty());
     if (fresh < best) {
       best = fresh;
       best_values = snapshot();
@@ -163,22 +156,7 @@ double Fitter::RunStage(double sparsity_weight, FitSummary* summary) {
         best_reproducible_values = best_values;
       }
     }
-    if (deadline_.Passed()) break;
-    if (worse && !stepped_back && step_backs_left > 0) {
-      // LM's model holds the correspondences (and a Boolean's intersection) fixed; where its
-      // step made the loss with fresh ones worse, or left parameters at which the sequence
-      // does not rebuild the fit, the model was trusted too far: back to the best point, and
-      // the next solve starts in a smaller trust region, as LM does with a rejected step.
-      --step_backs_left;
-      if (!best_reproducible_values.empty()) best = best_reproducible, best_values = best_reproducible_values;
-      restore(best_values);
-      trust_region_cap_ = radius_before_solve * options_.step_back_radius_factor;
-      stepped_back = true;
-      continue;
-    }
-    if (!improving && !stepped_back) break;
-    stepped_back = false;
-    radius_before_solve = std::min(trust_region_radius_, trust_region_cap_);
+    if (!improving || deadline_.Passed()) break;
     const int iterations_before = summary->inner_iterations;
     const double solved = Solve(correspondences, sparsity_weight, summary);
     ++summary->outer_iterations;

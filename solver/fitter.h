@@ -71,12 +71,6 @@ struct FitterOptions {
   int adam_iterations = 150;        // Adam steps per solve
   double adam_learning_rate = 0.01;
   double min_relative_improvement = 1e-3;  // outer loop stops below this
-  // LM only: when an update's step makes the loss with fresh correspondences worse (or leaves
-  // parameters at which the sequence does not rebuild the fit), the parameters go back to the
-  // best so far and the trust region is capped at this factor of the one the step was made in,
-  // at most max_step_backs times per stage (0: the outer loop stops at such an update).
-  int max_step_backs = 2;
-  double step_back_radius_factor = 0.1;
   int num_threads = 1;
   uint64_t seed = 1;
   std::vector<ParameterRangeRule> domain_rules;
@@ -170,7 +164,7 @@ class Fitter {
   void MakeObjective(const FitCorrespondences& correspondences, Objective* objective) const;
   double RunStage(double sparsity_weight, FitSummary* summary);
   double Solve(const FitCorrespondences& correspondences, double sparsity_weight, FitSummary* summary);
-  double SolveWithCeres(const Objective& objective, double initial_radius, FitSummary* summary);
+  double SolveWithCeres(const Objective& objective, FitSummary* summary);
   // The Program columns the current stage moves (not held, not constant within a block).
   FreeColumns FindFreeColumns() const;
   void Finalise(FitSummary* summary);
@@ -195,8 +189,6 @@ class Fitter {
   std::unique_ptr<ObjectiveScratch> scratch_;
   double sparsity_weight_ = 0;
   double trust_region_radius_ = 0;
-  // LM's largest trust region in this stage: lowered where a step went too far (RunStage).
-  double trust_region_cap_ = 1e16;
   bool hold_params_ = false, hold_gates_ = false;  // blocks held constant in the current stage
   bool free_gates_ = false;
   std::vector<int> boolean_weight_ops_;  // cleared when the gate finalisation renumbers ops

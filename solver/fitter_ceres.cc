@@ -61,7 +61,7 @@ void Fitter::EvaluateBothWays(ObjectiveEvaluation* own, ObjectiveEvaluation* cer
   ceres->jtj = dense.transpose() * dense;
 }
 
-double Fitter::SolveWithCeres(const Objective& objective, double initial_radius, FitSummary* summary) {
+double Fitter::SolveWithCeres(const Objective& objective, FitSummary* summary) {
   const std::unique_ptr<ceres::Problem> problem = MakeCeresProblem(objective);
   ceres::Solver::Options solver_options;
   solver_options.minimizer_type = ceres::TRUST_REGION;
@@ -72,8 +72,7 @@ double Fitter::SolveWithCeres(const Objective& objective, double initial_radius,
   solver_options.logging_type = ceres::SILENT;
   solver_options.function_tolerance = 1e-8;
   solver_options.parameter_tolerance = 1e-10;
-  solver_options.initial_trust_region_radius = initial_radius;
-  solver_options.max_trust_region_radius = trust_region_cap_;
+  solver_options.initial_trust_region_radius = trust_region_radius_;
   if (deadline_.limited()) solver_options.max_solver_time_in_seconds = deadline_.SecondsLeft();
   ceres::Solver::Summary solver_summary;
   ceres::Solve(solver_options, problem.get(), &solver_summary);
