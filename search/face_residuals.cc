@@ -79,6 +79,7 @@ FaceResiduals ComputeFaceResiduals(const Target& target, const Layout& layout) {
   }
   const double threshold = 0.04 * 2.0 * layout.half_extent.norm();
   r.outside.resize(num_faces), r.inside.resize(num_faces), r.outside_spread.assign(num_faces, 0.0);
+  r.outside_middle.assign(num_faces, 0);
   // Each sample belongs to the face holding its closest cage point (a centroid would hand the
   // rim of a wide face to its narrow neighbours).
   const std::vector<MeshTriangle> triangles = FanTriangulate(r.cage.faces);
@@ -97,7 +98,9 @@ FaceResiduals ComputeFaceResiduals(const Target& target, const Layout& layout) {
     const double along = (q - r.centroids[nearest]).dot(r.normals[nearest]);
     if (along > threshold) {
       r.outside[nearest].push_back(along);
-      r.outside_spread[nearest] += ((q - r.centroids[nearest]) - along * r.normals[nearest]).squaredNorm();
+      const double across = ((q - r.centroids[nearest]) - along * r.normals[nearest]).squaredNorm();
+      r.outside_spread[nearest] += across;
+      if (across < 0.09 * 0.5 * r.areas[nearest]) ++r.outside_middle[nearest];
     }
     if (along < -threshold) r.inside[nearest].push_back(-along);
   }

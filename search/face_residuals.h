@@ -20,6 +20,10 @@ struct FaceResiduals {
   std::vector<std::vector<double>> outside, inside;
   // Per face: mean squared distance of the outside samples from the face's normal line.
   std::vector<double> outside_spread;
+  // Per face: the outside samples over the face's middle (within 0.3 of its side of the
+  // centroid, across the normal): a protrusion standing on the face has its cap there, while
+  // a protrusion beside it only lends the face the samples of its side wall, over an edge.
+  std::vector<size_t> outside_middle;
   // Per face: an opening (a vessel's mouth, a recess): no target surface near the face's middle
   // and a floor under it. Depth of the floor along -normal (0: not an opening) and the width of
   // the rim around the opening (an Inset's thickness).

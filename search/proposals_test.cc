@@ -185,6 +185,32 @@ TEST(Proposals, SlabGridWhereTheLegsStart) {
   EXPECT_EQ(placed, 1);
 }
 
+TEST(Proposals, LegsExtrudedFromTheFacesTheyStandOn) {
+  // On the slab with the grid where the legs start, the legs' inner walls lie over the edges
+  // between the corner faces and their neighbours, and their samples go to either face; the
+  // legs are the four corner faces, extruded down together.
+  const auto target = ThinLeggedTable();
+  const Layout pose = PoseLayout(*target, Eigen::Matrix3d::Identity());
+  int legs_alone = 0;
+  for (const Expansion& slab : ProposeSlabs(*target, pose)) {
+    if (slab.what.find("where the parts below start") == std::string::npos) continue;
+    for (const Round& round : ProposeExtrusions(slab.layout, ComputeFaceResiduals(*target, slab.layout))) {
+      for (const Edit& edit : round.alternatives) {
+        Layout changed = slab.layout;
+        if (edit(&changed).empty() || changed.details.size() != slab.layout.details.size() + 1) continue;
+        const Json& extrude = changed.details.back();
+        if (extrude["op"] != "Extrude" || extrude["params"]["faces"]["expect"] != 4) continue;
+        bool corners = true;
+        for (const Json& center : extrude["params"]["faces"]["centers"]) {
+          corners = corners && std::abs(center[0].get<double>()) > 0.5 && std::abs(center[1].get<double>()) > 0.5;
+        }
+        if (corners && extrude["params"]["height"].get<double>() > 0) ++legs_alone;
+      }
+    }
+  }
+  EXPECT_GE(legs_alone, 1);
+}
+
 TEST(Proposals, NoOpeningUnderATablesThinLegs) {
   // The box's bottom face under a table: nothing in its middle and the top above it as a
   // floor, but legs at the corners only, no rim all round: not a vessel's mouth.

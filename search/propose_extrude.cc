@@ -76,6 +76,16 @@ std::vector<std::vector<FaceCandidate>> Groups(const std::vector<FaceCandidate>&
   return groups;
 }
 
+// The faces of a group with outside samples over their middle: a protrusion that stands on the
+// face (FaceResiduals::outside_middle).
+std::vector<FaceCandidate> StandingOn(const std::vector<FaceCandidate>& group, const FaceResiduals& r) {
+  std::vector<FaceCandidate> standing;
+  for (const FaceCandidate& c : group) {
+    if (r.outside_middle[c.face] > 0) standing.push_back(c);
+  }
+  return standing;
+}
+
 // Extrude out (a narrowed cap for a tapered wall), or Inset then Extrude in or out (a straight
 // wall with a rim, as a modeller does), on one group of faces.
 Round ExtrusionRound(const std::vector<FaceCandidate>& group, const FaceResiduals& r) {
@@ -136,6 +146,17 @@ std::vector<Round> ProposeExtrusions(const Layout& /*best*/, const FaceResiduals
   std::vector<Round> rounds;
   for (const std::vector<FaceCandidate>& group : groups) {
     rounds.push_back(ExtrusionRound(group, residuals));
+    // The same round also offers the group's faces that a protrusion stands on: samples on a
+    // protrusion's side wall project onto a face's edge and go to either face of the edge, so
+    // the faces beside a table's four legs (the grid's edge faces, sharing an edge with each
+    // leg's section) collect a share of the legs' samples at the legs' height and join their
+    // group, with no sample over their middle.
+    const std::vector<FaceCandidate> standing = group[0].height > 0 ? StandingOn(group, residuals) : group;
+    if (standing.size() > 1 && standing.size() < group.size()) {
+      for (auto& alternative : ExtrusionRound(standing, residuals).alternatives) {
+        rounds.back().alternatives.push_back(std::move(alternative));
+      }
+    }
   }
   return rounds;
 }
