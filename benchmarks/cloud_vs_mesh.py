@@ -6,6 +6,9 @@ better by more than 15% as clouds.
 
     python3 benchmarks/cloud_vs_mesh.py [--mesh docs/results] [--cloud docs/results-cloud]
 
+A records folder may be given at a git revision (`--mesh 13cf458:docs/results`), so both sides
+can come from one search.
+
 A ratio of medians moves with the models next to the median, not only with the fits: on a
 split of 21 models a gap between two neighbouring values moves it by half or more while the
 per-model ratios stay near 1. The interval says how far resampling the models moves it.
@@ -15,6 +18,7 @@ import json
 import os
 import random
 import statistics
+import subprocess
 
 GROUPS = [
     ("gt-dev", ["gt-dev"]),
@@ -30,9 +34,16 @@ GROUPS = [
 
 def load(directory, split):
     path = os.path.join(directory, split + ".json")
-    if not os.path.exists(path):
+    if os.path.exists(path):
+        text = open(path).read()
+    elif ":" in directory:
+        shown = subprocess.run(["git", "show", path], capture_output=True, text=True)
+        if shown.returncode != 0:
+            return {}
+        text = shown.stdout
+    else:
         return {}
-    return {r["name"]: r for r in json.load(open(path))["rows"] if r["ok"]}
+    return {r["name"]: r for r in json.loads(text)["rows"] if r["ok"]}
 
 
 def bootstrap_interval(pairs, rounds=2000, seed=1):
