@@ -14,11 +14,14 @@ split of 21 models a gap between two neighbouring values moves it by half or mor
 per-model ratios stay near 1. The interval says how far resampling the models moves it.
 """
 import argparse
-import json
 import os
 import random
 import statistics
 import subprocess
+import sys
+
+sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
+from compare_records import load  # noqa: E402  (a records file, or a git revision and path)
 
 GROUPS = [
     ("gt-dev", ["gt-dev"]),
@@ -32,18 +35,13 @@ GROUPS = [
 ]
 
 
-def load(directory, split):
-    path = os.path.join(directory, split + ".json")
-    if os.path.exists(path):
-        text = open(path).read()
-    elif ":" in directory:
-        shown = subprocess.run(["git", "show", path], capture_output=True, text=True)
-        if shown.returncode != 0:
-            return {}
-        text = shown.stdout
-    else:
+def load_split(directory, split):
+    """The ok rows of DIRECTORY/SPLIT.json by name ({} when the split has no record there)."""
+    try:
+        rows = load(directory.rstrip("/") + "/" + split + ".json")
+    except (OSError, subprocess.CalledProcessError):
         return {}
-    return {r["name"]: r for r in json.loads(text)["rows"] if r["ok"]}
+    return {name: row for name, row in rows.items() if row["ok"]}
 
 
 def bootstrap_interval(pairs, rounds=2000, seed=1):
@@ -67,7 +65,7 @@ def main():
     for label, splits in GROUPS:
         pairs = []
         for split in splits:
-            mesh, cloud = load(args.mesh, split), load(args.cloud, split)
+            mesh, cloud = load_split(args.mesh, split), load_split(args.cloud, split)
             pairs += [(mesh[n]["chamfer"], cloud[n]["chamfer"]) for n in sorted(set(mesh) & set(cloud))]
         if not pairs:
             continue

@@ -167,14 +167,21 @@ TEST(Proposals, SlabUnderATable) {
   EXPECT_FALSE(slabs[1].layout.grid.empty());
 }
 
+// The thin-legged table's slab starts whose grid is placed where the legs start.
+std::vector<Expansion> GridsWhereTheLegsStart(const Target& target) {
+  std::vector<Expansion> placed;
+  for (const Expansion& slab : ProposeSlabs(target, PoseLayout(target, Eigen::Matrix3d::Identity()))) {
+    if (slab.what.find("where the parts below start") != std::string::npos) placed.push_back(slab);
+  }
+  return placed;
+}
+
 TEST(Proposals, SlabGridWhereTheLegsStart) {
   // One of the slab's grids places its loops where the legs start.
   const auto target = ThinLeggedTable();
-  const Layout pose = PoseLayout(*target, Eigen::Matrix3d::Identity());
-  int placed = 0;
-  for (const Expansion& slab : ProposeSlabs(*target, pose)) {
-    if (slab.what.find("where the parts below start") == std::string::npos) continue;
-    ++placed;
+  const std::vector<Expansion> placed = GridsWhereTheLegsStart(*target);
+  EXPECT_EQ(placed.size(), 1u);
+  for (const Expansion& slab : placed) {
     ASSERT_EQ(slab.layout.grid.size(), 4u);
     // The grid's loop scales (its second and fourth ops), along X and along Y.
     EXPECT_NEAR(slab.layout.grid[1]["params"]["scale"][0].get<double>(), 2.5, 0.15);
@@ -182,7 +189,6 @@ TEST(Proposals, SlabGridWhereTheLegsStart) {
     Sequence sequence = ParseSequence(slab.layout.Document());
     EXPECT_NO_THROW(EvaluateSequence(&sequence));
   }
-  EXPECT_EQ(placed, 1);
 }
 
 TEST(Proposals, LegsExtrudedFromTheFacesTheyStandOn) {
@@ -190,10 +196,8 @@ TEST(Proposals, LegsExtrudedFromTheFacesTheyStandOn) {
   // between the corner faces and their neighbours, and their samples go to either face; the
   // legs are the four corner faces, extruded down together.
   const auto target = ThinLeggedTable();
-  const Layout pose = PoseLayout(*target, Eigen::Matrix3d::Identity());
   int legs_alone = 0;
-  for (const Expansion& slab : ProposeSlabs(*target, pose)) {
-    if (slab.what.find("where the parts below start") == std::string::npos) continue;
+  for (const Expansion& slab : GridsWhereTheLegsStart(*target)) {
     for (const Round& round : ProposeExtrusions(slab.layout, ComputeFaceResiduals(*target, slab.layout))) {
       for (const Edit& edit : round.alternatives) {
         Layout changed = slab.layout;

@@ -151,7 +151,8 @@ std::vector<Round> ProposeExtrusions(const Layout& /*best*/, const FaceResiduals
     // the faces beside a table's four legs (the grid's edge faces, sharing an edge with each
     // leg's section) collect a share of the legs' samples at the legs' height and join their
     // group, with no sample over their middle.
-    const std::vector<FaceCandidate> standing = group[0].height > 0 ? StandingOn(group, residuals) : group;
+    if (group[0].height <= 0) continue;
+    const std::vector<FaceCandidate> standing = StandingOn(group, residuals);
     if (standing.size() > 1 && standing.size() < group.size()) {
       for (auto& alternative : ExtrusionRound(standing, residuals).alternatives) {
         rounds.back().alternatives.push_back(std::move(alternative));
