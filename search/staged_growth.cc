@@ -1,4 +1,5 @@
 // The stages that grow a new start and the repeated details (search/staged_search.h).
+#include <algorithm>
 #include <cmath>
 
 #include "search/staged_search.h"
@@ -45,6 +46,46 @@ Trial StagedSearch::Grids(Trial best) {
     if (accept) best = trial;
   }
   return best;
+}
+
+Trial StagedSearch::RidgesWithExtrusions(Trial best) {
+  if (!evaluator_.InBudget()) return best;
+  std::vector<Layout> ridges;
+  std::vector<std::string> whats;
+  for (const Round& round : ProposeRidges(best.layout)) {
+    for (const Edit& edit : round.alternatives) {
+      Layout layout = best.layout;
+      std::string what = edit(&layout);
+      if (what.empty()) continue;
+      ridges.push_back(std::move(layout));
+      whats.push_back(std::move(what));
+    }
+  }
+  const std::vector<Trial> fitted = evaluator_.FitAll(ridges);
+  // The ridges that explain at least one op's worth of the loss, lowest loss first.
+  std::vector<size_t> order;
+  for (size_t i = 0; i < fitted.size(); ++i) {
+    if (fitted[i].ok && fitted[i].loss < best.loss * Price(evaluator_.options(), 1)) order.push_back(i);
+  }
+  std::stable_sort(order.begin(), order.end(), [&](size_t a, size_t b) { return fitted[a].loss < fitted[b].loss; });
+  constexpr size_t kRidgesFollowed = 3;
+  if (order.size() > kRidgesFollowed) order.resize(kRidgesFollowed);
+  Trial chosen = best;
+  double chosen_score = best.loss;
+  for (const size_t i : order) {
+    if (!evaluator_.InBudget()) break;
+    const Trial& ridge = fitted[i];
+    const int ridge_ops = ridge.layout.NumOps() - best.layout.NumOps();
+    const Trial trial = RepeatDetails(ridge);
+    const int extrusion_ops = trial.layout.NumOps() - ridge.layout.NumOps();
+    const double price =
+        Price(evaluator_.options(), ridge_ops, kStructureGainPerOp) * Price(evaluator_.options(), extrusion_ops);
+    const double score = trial.ok ? trial.loss / price : kInfinity;
+    const bool accept = score < chosen_score;
+    evaluator_.Log("ridge", best, trial, accept, whats[i] + " and its extrusions");
+    if (accept) chosen = trial, chosen_score = score;
+  }
+  return chosen;
 }
 
 Trial StagedSearch::Slab(Trial best) {

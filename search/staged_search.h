@@ -68,6 +68,12 @@ class StagedSearch {
     return Resolution(ConsiderRounds(&evaluator_, "deform", best, ProposeDeforms(best.layout)));
   }
   Trial Ridges(Trial best) { return ConsiderRounds(&evaluator_, "ridge", best, ProposeRidges(best.layout)); }
+  // As a main form, a ridge is judged with the extrusions it enables (a roof with its
+  // chimney): the best-fitting ridge alone often raises the cage toward a protrusion, where
+  // another, followed by the protrusion's extrusions, is the roof. The few ridges that lower
+  // the loss most are followed; the best line is kept when the extrusions pay for theirs at
+  // the usual price and the ridge for its at a structure's.
+  Trial RidgesWithExtrusions(Trial best);
   Trial Holes(Trial best) { return ConsiderRounds(&evaluator_, "hole", best, ProposeHoles(best.layout)); }
   Trial Booleans(Trial best) {
     const std::vector<ResidualCluster> clusters = FindResidualClusters(target_, best.layout);

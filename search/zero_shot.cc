@@ -89,7 +89,7 @@ Trial StagedSearch::Passes(Trial best) {
 std::vector<StagedSearch::Branch> StagedSearch::ChooseMainForms(const Trial& start) {
   const std::pair<const char*, Stage> stages[] = {
       {"slab", &StagedSearch::Slab},      {"body", &StagedSearch::Bodies},   {"profile", &StagedSearch::Profiles},
-      {"deform", &StagedSearch::Deforms}, {"ridge", &StagedSearch::Ridges}, {"hole", &StagedSearch::Holes},
+      {"deform", &StagedSearch::Deforms}, {"ridge", &StagedSearch::RidgesWithExtrusions}, {"hole", &StagedSearch::Holes},
       {"detail", &StagedSearch::RepeatDetails}, {"bevel", &StagedSearch::Bevels}, {"mirror", &StagedSearch::Mirror}};
   std::vector<Task> tasks;
   for (const auto& entry : stages) {
