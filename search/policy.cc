@@ -10,9 +10,6 @@ double Price(const ZeroShotOptions& options, int added, double gain_per_op) {
   return std::pow(1.0 - std::max(gain_per_op, options.min_relative_gain), added);
 }
 
-namespace {
-
-// The alternatives of `round` applied to `best`, and what each does.
 void Alternatives(const Layout& best, const Round& round, std::vector<Layout>* layouts, std::vector<std::string>* whats) {
   for (const Edit& edit : round.alternatives) {
     Layout layout = best;
@@ -22,6 +19,8 @@ void Alternatives(const Layout& best, const Round& round, std::vector<Layout>* l
     if (whats != nullptr) whats->push_back(std::move(what));
   }
 }
+
+namespace {
 
 // Rounds are judged one after another, each on the best so far, and most change nothing; so
 // while a round has fewer alternatives than there are threads, the next rounds' alternatives on

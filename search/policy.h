@@ -33,6 +33,10 @@ double Price(const ZeroShotOptions& options, int added, double gain_per_op = 0);
 // per op they add, and then the general proposals that follow are not blocked by them.
 constexpr double kStructureGainPerOp = 0.25;
 
+// Appends the alternatives of `round` that apply to `best` (as layouts), and what each does
+// when `whats` is given.
+void Alternatives(const Layout& best, const Round& round, std::vector<Layout>* layouts, std::vector<std::string>* whats);
+
 // Fits each alternative of `round` applied to `best` and keeps the one whose loss, divided by
 // the price of the ops it adds, is lowest, if that is below the loss of `best` (a change that
 // shortens the sequence may cost some loss: the same price per op).

@@ -52,19 +52,12 @@ Trial StagedSearch::RidgesWithExtrusions(Trial best) {
   if (!evaluator_.InBudget()) return best;
   std::vector<Layout> ridges;
   std::vector<std::string> whats;
-  for (const Round& round : ProposeRidges(best.layout)) {
-    for (const Edit& edit : round.alternatives) {
-      Layout layout = best.layout;
-      std::string what = edit(&layout);
-      if (what.empty()) continue;
-      ridges.push_back(std::move(layout));
-      whats.push_back(std::move(what));
-    }
-  }
+  for (const Round& round : ProposeRidges(best.layout)) Alternatives(best.layout, round, &ridges, &whats);
   const std::vector<Trial> fitted = evaluator_.FitAll(ridges);
   // The ridges that explain at least one op's worth of the loss, lowest loss first.
   std::vector<size_t> order;
   for (size_t i = 0; i < fitted.size(); ++i) {
+    evaluator_.Log("ridge", best, fitted[i], false, whats[i] + " (before its extrusions)");
     if (fitted[i].ok && fitted[i].loss < best.loss * Price(evaluator_.options(), 1)) order.push_back(i);
   }
   std::stable_sort(order.begin(), order.end(), [&](size_t a, size_t b) { return fitted[a].loss < fitted[b].loss; });
