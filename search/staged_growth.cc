@@ -48,34 +48,43 @@ Trial StagedSearch::Grids(Trial best) {
   return best;
 }
 
-Trial StagedSearch::RidgesWithExtrusions(Trial best) {
+Trial StagedSearch::WithExtrusions(const std::string& stage, const Trial& best, const std::vector<Round>& rounds,
+                                   size_t followed) {
   if (!evaluator_.InBudget()) return best;
-  std::vector<Layout> ridges;
+  std::vector<Layout> structures;
   std::vector<std::string> whats;
-  for (const Round& round : ProposeRidges(best.layout)) Alternatives(best.layout, round, &ridges, &whats);
-  const std::vector<Trial> fitted = evaluator_.FitAll(ridges);
-  // The ridges that explain at least one op's worth of the loss, lowest loss first.
-  std::vector<size_t> order;
-  for (size_t i = 0; i < fitted.size(); ++i) {
-    evaluator_.Log("ridge", best, fitted[i], false, whats[i] + " (before its extrusions)");
-    if (fitted[i].ok && fitted[i].loss < best.loss * Price(evaluator_.options(), 1)) order.push_back(i);
+  std::vector<double> gains_per_op;
+  for (const Round& round : rounds) {
+    Alternatives(best.layout, round, &structures, &whats);
+    gains_per_op.resize(structures.size(), round.gain_per_op);
   }
-  std::stable_sort(order.begin(), order.end(), [&](size_t a, size_t b) { return fitted[a].loss < fitted[b].loss; });
-  constexpr size_t kRidgesFollowed = 3;
-  if (order.size() > kRidgesFollowed) order.resize(kRidgesFollowed);
+  const std::vector<Trial> fitted = evaluator_.FitAll(structures);
+  // The structures that explain at least one op's worth of the loss, the lowest loss after
+  // the price of their ops first.
+  std::vector<size_t> order;
+  std::vector<double> scores(fitted.size(), kInfinity);
+  for (size_t i = 0; i < fitted.size(); ++i) {
+    evaluator_.Log(stage, best, fitted[i], false, whats[i] + " (before its extrusions)");
+    if (!fitted[i].ok || !(fitted[i].loss < best.loss * Price(evaluator_.options(), 1))) continue;
+    const int ops = fitted[i].layout.NumOps() - best.layout.NumOps();
+    scores[i] = fitted[i].loss / Price(evaluator_.options(), ops, gains_per_op[i]);
+    order.push_back(i);
+  }
+  std::stable_sort(order.begin(), order.end(), [&](size_t a, size_t b) { return scores[a] < scores[b]; });
+  if (order.size() > followed) order.resize(followed);
   Trial chosen = best;
   double chosen_score = best.loss;
   for (const size_t i : order) {
     if (!evaluator_.InBudget()) break;
-    const Trial& ridge = fitted[i];
-    const int ridge_ops = ridge.layout.NumOps() - best.layout.NumOps();
-    const Trial trial = RepeatDetails(ridge);
-    const int extrusion_ops = trial.layout.NumOps() - ridge.layout.NumOps();
-    const double price =
-        Price(evaluator_.options(), ridge_ops, kStructureGainPerOp) * Price(evaluator_.options(), extrusion_ops);
+    const Trial& structure = fitted[i];
+    const int structure_ops = structure.layout.NumOps() - best.layout.NumOps();
+    const Trial trial = RepeatDetails(structure);
+    const int extrusion_ops = trial.layout.NumOps() - structure.layout.NumOps();
+    const double price = Price(evaluator_.options(), structure_ops, gains_per_op[i]) *
+                         Price(evaluator_.options(), extrusion_ops);
     const double score = trial.ok ? trial.loss / price : kInfinity;
     const bool accept = score < chosen_score;
-    evaluator_.Log("ridge", best, trial, accept, whats[i] + " and its extrusions");
+    evaluator_.Log(stage, best, trial, accept, whats[i] + " and its extrusions");
     if (accept) chosen = trial, chosen_score = score;
   }
   return chosen;

@@ -68,12 +68,16 @@ class StagedSearch {
     return Resolution(ConsiderRounds(&evaluator_, "deform", best, ProposeDeforms(best.layout)));
   }
   Trial Ridges(Trial best) { return ConsiderRounds(&evaluator_, "ridge", best, ProposeRidges(best.layout)); }
-  // As a main form, a ridge is judged with the extrusions it enables (a roof with its
-  // chimney): the best-fitting ridge alone often raises the cage toward a protrusion, where
-  // another, followed by the protrusion's extrusions, is the roof. The few ridges that lower
-  // the loss most are followed; the best line is kept when the extrusions pay for theirs at
-  // the usual price and the ridge for its at a structure's.
-  Trial RidgesWithExtrusions(Trial best);
+  // A structure judged with the extrusions it enables (a roof with its bay): alone, the
+  // best-fitting structure often bends the cage toward a protrusion, where another, followed by
+  // the protrusion's extrusions, is the design. The `followed` alternatives of `rounds` (each
+  // applied to `best`) with the lowest loss after their price are followed by their
+  // extrusions, and the best line is kept when the extrusions pay for theirs at the usual price
+  // and the structure for its at its round's.
+  Trial WithExtrusions(const std::string& stage, const Trial& best, const std::vector<Round>& rounds, size_t followed);
+  // The ridge main form. (Profiles followed alike, the two best after their price, did not
+  // reach a tuning model's waist and boss: the boss pulls the single loop's fit away.)
+  Trial RidgesWithExtrusions(Trial best) { return WithExtrusions("ridge", best, ProposeRidges(best.layout), 3); }
   Trial Holes(Trial best) { return ConsiderRounds(&evaluator_, "hole", best, ProposeHoles(best.layout)); }
   Trial Booleans(Trial best) {
     const std::vector<ResidualCluster> clusters = FindResidualClusters(target_, best.layout);

@@ -87,10 +87,15 @@ Trial StagedSearch::Passes(Trial best) {
 }
 
 std::vector<StagedSearch::Branch> StagedSearch::ChooseMainForms(const Trial& start) {
-  const std::pair<const char*, Stage> stages[] = {
-      {"slab", &StagedSearch::Slab},      {"body", &StagedSearch::Bodies},   {"profile", &StagedSearch::Profiles},
-      {"deform", &StagedSearch::Deforms}, {"ridge", &StagedSearch::RidgesWithExtrusions}, {"hole", &StagedSearch::Holes},
-      {"detail", &StagedSearch::RepeatDetails}, {"bevel", &StagedSearch::Bevels}, {"mirror", &StagedSearch::Mirror}};
+  const std::pair<const char*, Stage> stages[] = {{"slab", &StagedSearch::Slab},
+                                                  {"body", &StagedSearch::Bodies},
+                                                  {"profile", &StagedSearch::Profiles},
+                                                  {"deform", &StagedSearch::Deforms},
+                                                  {"ridge", &StagedSearch::RidgesWithExtrusions},
+                                                  {"hole", &StagedSearch::Holes},
+                                                  {"detail", &StagedSearch::RepeatDetails},
+                                                  {"bevel", &StagedSearch::Bevels},
+                                                  {"mirror", &StagedSearch::Mirror}};
   std::vector<Task> tasks;
   for (const auto& entry : stages) {
     const Stage stage = entry.second;
