@@ -16,8 +16,8 @@ namespace {
 
 // A house 2.2 x 1.8 x 0.9 with a gable roof (a loop cut across X, its top vertices raised by
 // 0.5) and a bay on the +Y wall (an Inset, then an Extrude out by 0.7). The bay pulls the
-// cage toward +Y, so a ridge alone pays little, and the ridge that fits best alone is not the
-// roof's.
+// cage toward +Y, so the roof's ridge alone explains too little of the loss for its two ops
+// (0.0038 -> 0.0022 here, against a structure's price of 0.25 per op).
 std::vector<Json> HouseWithABay() {
   build::DisplaceGroup roof{{}, Vec3d(0, 0, 0.5)};
   roof.verts.box.lo[0] = -0.1, roof.verts.box.hi[0] = 0.1, roof.verts.box.lo[2] = 0.3;
