@@ -1,7 +1,9 @@
 #!/usr/bin/env python3
-"""Where a results record's sequences differ from the truth, op by op.
+"""Where a results record's sequences differ from the truth, by kind of truth and op by op.
 
-For each op type: in how many models the truth has it, in how many ours has it, and the op
+First, by the truth's kind (its ops after the first scale: "LoopCut EdgeLoopAffineScale",
+"Boolean ...") the models' mean LCS and how much of the split's mean LCS their shortfall costs.
+Then for each op type: in how many models the truth has it, in how many ours has it, and the op
 counts ours adds beyond the truth (extra) and misses (missing), summed over the models. With two
 records of the same models it also prints the paired change of each model's LCS in a summary.
 
@@ -19,6 +21,43 @@ import statistics
 
 def ops_of(path):
     return [op["op"] for op in json.load(open(path))["operations"]]
+
+
+def truth_class(ops):
+    """A truth's kind, from its ops after the first scale: a CSG, extrusion, inset or knife start
+    by that op, a loop cut by the op that shapes it (LoopCut EdgeLoopAffineScale, ...)."""
+    rest = ops[1:] if ops and ops[0] == "GlobalAffineScale" else ops
+    if not rest:
+        return "(scale only)"
+    if rest[0] == "LoopCut" and len(rest) > 1:
+        return "LoopCut " + rest[1]
+    return rest[0] + " ..."
+
+
+def print_classes(rows, truth_dir, models):
+    """Where the mean LCS is lost: by the truth's kind, its models' mean LCS and the share of the
+    split's mean LCS their shortfall costs (1 - LCS summed over the class, over all models)."""
+    count, lost = collections.Counter(), collections.Counter()
+    recall = []
+    for name, row in rows.items():
+        truth_path = os.path.join(truth_dir, name, "sequence.json")
+        if not os.path.exists(truth_path) or row.get("lcs") is None:
+            continue
+        truth = ops_of(truth_path)
+        kind = truth_class(truth)
+        count[kind] += 1
+        lost[kind] += 1 - row["lcs"]
+        # The common subsequence over the truth's length: the LCS ours would have without the
+        # ops it adds beyond the truth's.
+        common = row["lcs"] * max(len(truth), len(row["sequence"].split()))
+        recall.append(common / len(truth))
+    if recall:
+        print(f"mean LCS without our extra ops (the truth's ops we find, in order): {statistics.mean(recall):.3f}")
+    print("| truth starts with | models | their mean LCS | mean LCS lost to them |")
+    print("|---|---|---|---|")
+    for kind in sorted(count, key=lambda k: -lost[k]):
+        print(f"| {kind} | {count[kind]} | {1 - lost[kind] / count[kind]:.2f} | {lost[kind] / models:.3f} |")
+    print()
 
 
 def main():
@@ -45,6 +84,7 @@ def main():
         for op, n in (truth - ours).items():
             missing[op] += n
     print(f"{models} models with a truth in {args.records[0]}")
+    print_classes(base, args.truth, models)
     print("| op | truth has it | ours has it | extra ops | missing ops |")
     print("|---|---|---|---|---|")
     for op in sorted(set(truth_has) | set(ours_has), key=lambda o: -(extra[o] + missing[o])):
