@@ -10,18 +10,13 @@
 #include "core/obj_io.h"
 #include "core/sequence_similarity.h"
 #include "core/surface_distance.h"
+#include "ops/sequence_op_names.h"
 #include "solver/target.h"
 #include "tests/blender_runner.h"
 
 namespace opgraph {
 namespace fs = std::filesystem;
 namespace {
-
-std::vector<std::string> OpNamesOf(const Json& document) {
-  std::vector<std::string> names;
-  for (const Json& op : document.at("operations")) names.push_back(op.at("op"));
-  return names;
-}
 
 double NumberOr(const Json& value, double fallback) { return value.is_number() ? value.get<double>() : fallback; }
 
@@ -117,12 +112,12 @@ ResultsRow RunModel(const ResultsModel& model, const RunOptions& options) {
       row.f1_001 = against_mesh.f1_001, row.f1_002 = against_mesh.f1_002;
       row.normal_consistency = against_mesh.normal_consistency;
     }
-    const std::vector<std::string> ours = OpNamesOf(sequence);
+    const std::vector<std::string> ours = SequenceOpNames(sequence);
     row.ops = static_cast<int>(ours.size());
     row.subdivided = std::find(ours.begin(), ours.end(), "Subdivision") != ours.end();
     for (const std::string& op : ours) row.sequence += (row.sequence.empty() ? "" : " ") + op;
     if (!model.truth.empty()) {
-      const std::vector<std::string> truth = OpNamesOf(Json::parse(std::ifstream(model.truth)));
+      const std::vector<std::string> truth = SequenceOpNames(Json::parse(std::ifstream(model.truth)));
       row.lcs = NormalizedLcsSimilarity(ours, truth);
       row.levenshtein = LevenshteinSimilarity(ours, truth);
     }

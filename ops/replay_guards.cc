@@ -8,6 +8,7 @@
 #include <set>
 
 #include "core/surface_distance.h"
+#include "ops/sequence_op_names.h"
 
 namespace opgraph {
 
@@ -47,9 +48,7 @@ bool SubdividesTwoEdgeVertexIn(const std::vector<std::string>& names, const std:
 }  // namespace
 
 bool SubdividesTwoEdgeVertex(const Json& document, const std::vector<Mesh>& steps) {
-  std::vector<std::string> names;
-  for (const Json& op : document.at("operations")) names.push_back(op.at("op"));
-  return SubdividesTwoEdgeVertexIn(names, steps);
+  return SubdividesTwoEdgeVertexIn(SequenceOpNames(document), steps);
 }
 
 bool NearGeometricBranch(const Sequence& evaluated, const std::vector<Mesh>& steps) {

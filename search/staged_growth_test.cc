@@ -9,6 +9,7 @@
 #include "core/sequence_similarity.h"
 #include "ops/builders.h"
 #include "ops/sequence.h"
+#include "ops/sequence_op_names.h"
 #include "search/zero_shot.h"
 
 namespace opgraph {
@@ -33,12 +34,6 @@ std::vector<Json> HouseWithABay() {
           build::VertexDisplace({roof}), build::Inset(wall, 0.12), build::Extrude(bay)};
 }
 
-std::vector<std::string> OpNames(const Json& document) {
-  std::vector<std::string> names;
-  for (const Json& op : document.at("operations")) names.push_back(op.at("op"));
-  return names;
-}
-
 TEST(StagedGrowth, ARidgeIsJudgedWithTheExtrusionsItEnables) {
   const Json truth = build::Document(HouseWithABay());
   Sequence truth_sequence = ParseSequence(truth);
@@ -51,12 +46,12 @@ TEST(StagedGrowth, ARidgeIsJudgedWithTheExtrusionsItEnables) {
   const ZeroShotResult result = RecoverSequence(target, options);
   Sequence sequence = ParseSequence(result.sequence);
   const ShapeMetrics metrics = ComputeShapeMetrics(EvaluateSequence(&sequence).back(), target_mesh);
-  const std::vector<std::string> found = OpNames(result.sequence);
+  const std::vector<std::string> found = SequenceOpNames(result.sequence);
   std::string names;
   for (const std::string& name : found) names += " " + name;
   // The roof and the bay, as built. Judged alone, no ridge pays for its ops here, and the search
   // grew the roof from extrusions (before 86bbfcc: Extrude x3, Chamfer 0.026 at this budget).
-  EXPECT_GE(NormalizedLcsSimilarity(found, OpNames(truth)), 0.8) << names;
+  EXPECT_GE(NormalizedLcsSimilarity(found, SequenceOpNames(truth)), 0.8) << names;
   EXPECT_LT(metrics.chamfer.Sum(), 1e-4) << names;
 }
 

@@ -15,6 +15,7 @@
 #include "core/obj_io.h"
 #include "ops/blender_script.h"
 #include "ops/sequence.h"
+#include "ops/sequence_op_names.h"
 #include "tests/run_command.h"
 
 namespace opgraph {
@@ -98,12 +99,6 @@ const char* const kModellerShapes[][2] = {
                                     [1.35, -0.5, -0.1], [-1.35, -0.5, -0.1]], "expect": 4}, "height": 0.9, "mode": "individual"}}]})"},
 };
 
-std::vector<std::string> OpNames(const Json& document) {
-  std::vector<std::string> names;
-  for (const Json& op : document.at("operations")) names.push_back(op.at("op"));
-  return names;
-}
-
 TEST(ZeroShot, FindsAModellersKindOfSequence) {
   double similarity_sum = 0;
   for (const auto& shape : kModellerShapes) {
@@ -114,7 +109,8 @@ TEST(ZeroShot, FindsAModellersKindOfSequence) {
     const ZeroShotResult result = RecoverSequence(target, options);
     Sequence sequence = ParseSequence(result.sequence);
     const ShapeMetrics metrics = ComputeShapeMetrics(EvaluateSequence(&sequence).back(), target_mesh);
-    const std::vector<std::string> found = OpNames(result.sequence), truth = OpNames(Json::parse(shape[1]));
+    const std::vector<std::string> found = SequenceOpNames(result.sequence);
+    const std::vector<std::string> truth = SequenceOpNames(Json::parse(shape[1]));
     const double similarity = NormalizedLcsSimilarity(found, truth);
     std::string names;
     for (const std::string& name : found) names += " " + name;
