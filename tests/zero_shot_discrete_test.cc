@@ -5,6 +5,7 @@
 #include "core/metrics.h"
 #include "ops/builders.h"
 #include "ops/sequence.h"
+#include "ops/sequence_op_names.h"
 #include "search/zero_shot.h"
 #include "tests/known_shapes.h"
 
@@ -29,7 +30,7 @@ Recovered RecoverFromTruth(const std::vector<Json>& truth_ops) {
   options.work_budget = 60000;
   Recovered recovered;
   recovered.sequence = RecoverSequence(target, options).sequence;
-  for (const Json& op : recovered.sequence.at("operations")) recovered.ops.push_back(op.at("op"));
+  recovered.ops = SequenceOpNames(recovered.sequence);
   Sequence found = ParseSequence(recovered.sequence);
   recovered.chamfer = ComputeShapeMetrics(EvaluateSequence(&found).back(), target_mesh).chamfer.Sum();
   return recovered;

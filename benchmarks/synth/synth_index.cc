@@ -8,6 +8,7 @@
 #include "benchmarks/splits.h"
 #include "benchmarks/synth/synth_checks.h"
 #include "ops/op.h"
+#include "ops/sequence_op_names.h"
 
 namespace opgraph {
 namespace synth {
@@ -38,7 +39,7 @@ IndexEntry MakeIndexEntry(const std::string& name, int index, const SynthModel& 
   entry.name = name;
   entry.index = index;
   entry.recipe = model.recipe;
-  for (const Json& op : model.sequence.at("operations")) entry.ops.push_back(op.at("op"));
+  entry.ops = SequenceOpNames(model.sequence);
   entry.vertices = model.mesh.NumVertices();
   entry.faces = model.mesh.NumFaces();
   entry.genus = Genus(model.mesh);
