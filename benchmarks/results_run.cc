@@ -59,7 +59,7 @@ ResultsRow RowFromJson(const Json& j) {
   return r;
 }
 
-ResultsRow RunModel(const ResultsModel& model, const RunOptions& options) {
+ResultsRow FitModel(const ResultsModel& model, const RunOptions& options) {
   ResultsRow row;
   row.set = model.set, row.name = model.name;
   const fs::path dir = options.out / model.set / model.name, log = options.out / model.set / (model.name + ".log");
@@ -126,15 +126,21 @@ ResultsRow RunModel(const ResultsModel& model, const RunOptions& options) {
     return row;
   }
   row.ok = true;
+  return row;
+}
+
+void ReplayModel(const RunOptions& options, ResultsRow* row) {
+  if (!row->ok) return;
+  const fs::path dir = options.out / row->set / row->name;
   try {  // real Blender replays the script; its mesh must be ours
     const Mesh ours = ReadObj((dir / "result.obj").string());
     const Mesh blender = RunBlender((dir / "rebuild_blender.py").string(), (dir / "blender.obj").string());
-    row.replay_distance = SymmetricSurfaceDistanceRelative(ours, blender);
-    row.replay_counts_equal = ours.NumVertices() == blender.NumVertices() && ours.NumFaces() == blender.NumFaces();
+    row->replay_distance = SymmetricSurfaceDistanceRelative(ours, blender);
+    row->replay_counts_equal = ours.NumVertices() == blender.NumVertices() && ours.NumFaces() == blender.NumFaces();
   } catch (const std::exception&) {
-    row.replay_distance = -1;
+    row->replay_distance = -1;
   }
-  return row;
 }
+
 
 }  // namespace opgraph

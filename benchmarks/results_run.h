@@ -44,7 +44,11 @@ struct RunOptions {
   int cloud_points = 0;
 };
 
-// Runs the model end to end; a failure of fit_sequence is a row with `error` set.
-ResultsRow RunModel(const ResultsModel& model, const RunOptions& options);
+// fit_sequence on the model and the row's numbers, without the replay (replay_distance < 0); a
+// failure of fit_sequence is a row with `error` set.
+ResultsRow FitModel(const ResultsModel& model, const RunOptions& options);
+// Real Blender replays the script of a fitted row (ok); sets its replay numbers. Touches only
+// the model's folder and `row`, so it may run beside the next model's fit.
+void ReplayModel(const RunOptions& options, ResultsRow* row);
 
 }  // namespace opgraph
