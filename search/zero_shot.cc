@@ -1,11 +1,10 @@
 #include "search/zero_shot.h"
 
 #include <algorithm>
-#include <atomic>
 #include <cmath>
 #include <stdexcept>
 
-#include "core/parallel_for.h"
+#include "core/priority_tasks.h"
 #include "search/finish.h"
 #include "search/staged_search.h"
 
@@ -50,13 +49,12 @@ void StagedSearch::Speculate(const std::vector<Task>& tasks) {
   std::vector<StagedSearch> copies;
   copies.reserve(tasks.size());
   for (Evaluator& speculator : speculators) copies.push_back(StagedSearch(*this, std::move(speculator)));
-  // Once no line is left to start, a thread whose line ends helps the lines still running.
-  const int workers = std::min(threads, count);
-  std::atomic<int> ended{0};
-  ParallelFor(count, threads, [&](int i) {
-    tasks[i](&copies[i]);
-    if (++ended > count - workers) copies[i].evaluator_.LendThreads();
-  });
+  // The lines in the order the real run takes them, each at a lower priority than the one
+  // before: a later line, whose fits are the likelier to be wasted (the budget may end before
+  // it), takes a core mostly when the earlier ones leave it idle. Once no line is left to start,
+  // a thread whose line ends helps the lines still running.
+  RunInPriorityOrder(
+      count, threads, [&](int i) { tasks[i](&copies[i]); }, [&](int i) { copies[i].evaluator_.LendThreads(); });
   for (StagedSearch& copy : copies) evaluator_.Adopt(&copy.evaluator_);
 }
 
