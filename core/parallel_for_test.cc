@@ -1,4 +1,5 @@
 #include "core/parallel_for.h"
+#include "core/priority_tasks.h"
 
 #include <gtest/gtest.h>
 
@@ -33,18 +34,26 @@ TEST(ParallelFor, TheCallersThreadRunsTaskZero) {
   }
 }
 
-TEST(ParallelFor, RethrowsTheLowestIndexErrorAfterAllTasks) {
-  std::atomic<int> ran{0};
-  try {
-    ParallelFor(20, 3, [&](int i) {
+// Both task runners (core/priority_tasks.h too) end every task before rethrowing.
+TEST(ParallelFor, EitherRunnerRethrowsTheLowestIndexErrorAfterAllTasks) {
+  for (const bool by_priority : {false, true}) {
+    std::atomic<int> ran{0};
+    auto body = [&](int i) {
       ++ran;
       if (i == 7 || i == 13) throw std::runtime_error("task " + std::to_string(i));
-    });
-    FAIL() << "no exception";
-  } catch (const std::runtime_error& error) {
-    EXPECT_EQ(std::string(error.what()), "task 7");
+    };
+    try {
+      if (by_priority) {
+        RunInPriorityOrder(20, 3, body, [](int) {});
+      } else {
+        ParallelFor(20, 3, body);
+      }
+      FAIL() << "no exception";
+    } catch (const std::runtime_error& error) {
+      EXPECT_EQ(std::string(error.what()), "task 7");
+    }
+    EXPECT_EQ(ran.load(), 20) << (by_priority ? "RunInPriorityOrder" : "ParallelFor");
   }
-  EXPECT_EQ(ran.load(), 20);
 }
 
 }  // namespace

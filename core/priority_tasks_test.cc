@@ -3,9 +3,6 @@
 #include <gtest/gtest.h>
 
 #include <atomic>
-#include <mutex>
-#include <stdexcept>
-#include <string>
 #include <thread>
 #include <vector>
 
@@ -54,20 +51,6 @@ TEST(RunInPriorityOrder, TheCallerRunsTaskZeroAtItsPriorityAndLaterTasksRunLower
   EXPECT_EQ(ThisThreadsNice(), caller_nice);  // the caller's own priority is kept
 }
 #endif
-
-TEST(RunInPriorityOrder, RethrowsTheLowestIndexErrorAfterAllTasks) {
-  std::atomic<int> ran{0};
-  try {
-    RunInPriorityOrder(20, 3, [&](int i) {
-      ++ran;
-      if (i == 7 || i == 13) throw std::runtime_error("task " + std::to_string(i));
-    }, [](int) {});
-    FAIL() << "no exception";
-  } catch (const std::runtime_error& error) {
-    EXPECT_EQ(std::string(error.what()), "task 7");
-  }
-  EXPECT_EQ(ran.load(), 20);
-}
 
 }  // namespace
 }  // namespace opgraph
