@@ -142,5 +142,4 @@ void ReplayModel(const RunOptions& options, ResultsRow* row) {
   }
 }
 
-
 }  // namespace opgraph
