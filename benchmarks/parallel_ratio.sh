@@ -20,6 +20,7 @@ while [ $# -gt 0 ]; do
     *) echo "parallel_ratio.sh: unknown argument '$1'" >&2; exit 2 ;;
   esac
 done
+bash scripts/build.sh
 rm -rf "$out" && mkdir -p "$out"
 modes=("1 1" "1 2" "2 1")  # jobs threads
 for round in $(seq 1 "$rounds"); do
