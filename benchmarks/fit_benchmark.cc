@@ -5,7 +5,8 @@
 // Jacobian throughput for a ~2,000-vertex program with 10,000 samples.
 // Prints Markdown (docs/benchmarks.md holds a copy).
 //
-// usage: fit_benchmark [GT_DEV_DIR]   (default: ../shared/data/gt-dev beside the source tree)
+// usage: fit_benchmark [--models a,b] [--nothroughput] [GT_DEV_DIR]
+//        (default: ../shared/data/gt-dev beside the source tree)
 #include <algorithm>
 #include <chrono>
 #include <cstdio>
@@ -14,6 +15,7 @@
 #include <limits>
 
 #include <ceres/crs_matrix.h>
+#include <gflags/gflags.h>
 #include <ceres/manifold.h>
 #include <ceres/problem.h>
 
@@ -23,6 +25,9 @@
 #include "solver/fitter.h"
 #include "tests/gt_convert.h"
 #include "tests/perturb.h"
+
+DEFINE_string(models, "", "comma-separated gt-dev model names to run (empty: all; each keeps its perturbation)");
+DEFINE_bool(throughput, true, "also measure the Jacobian throughput");
 
 namespace opgraph {
 namespace {
@@ -80,7 +85,11 @@ void CompareOptimizers(const fs::path& root) {
     std::string why_not;
     const Json converted = ConvertGtSequence(model / "sequence.json", &why_not);
     if (converted.is_null()) continue;
-    ++index;
+    ++index;  // counted over every model, so a model's perturbation does not depend on --models
+    if (!FLAGS_models.empty() &&
+        ("," + FLAGS_models + ",").find("," + model.filename().string() + ",") == std::string::npos) {
+      continue;
+    }
     TargetOptions target_options;
     const std::unique_ptr<Target> target = LoadTarget((model / "model.obj").string(), target_options);
     std::vector<Run> runs;
@@ -213,14 +222,14 @@ void JacobianThroughput() {
 int main(int argc, char** argv) {
   const std::vector<std::string> arguments = opgraph::ParseCommandLineOrExit(
       argc, argv,
-      {"fit_benchmark", "usage: fit_benchmark [GT_DEV_DIR]   (default: ../shared/data/gt-dev beside the source tree)",
-       /*flags_file=*/"", /*max_arguments=*/1});
+      {"fit_benchmark", "usage: fit_benchmark [--models a,b] [--nothroughput] [GT_DEV_DIR]   (default: ../shared/data/gt-dev beside the source tree)",
+       /*flags_file=*/__FILE__, /*max_arguments=*/1});
   const std::filesystem::path root =
       !arguments.empty() ? std::filesystem::path(arguments[0])
                          : std::filesystem::path(OPGRAPH_SOURCE_DIR) / ".." / "shared" / "data" / "gt-dev";
   try {
     opgraph::CompareOptimizers(root);
-    opgraph::JacobianThroughput();
+    if (FLAGS_throughput) opgraph::JacobianThroughput();
   } catch (const std::exception& e) {
     return opgraph::BadInput("fit_benchmark", e.what());
   }
