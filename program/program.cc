@@ -107,12 +107,14 @@ Program::Program(Sequence* sequence, bool free_gates, const std::vector<BranchCh
 
 std::vector<double*> Program::BlockPointers() const {
   std::vector<double*> pointers;
+  pointers.reserve(blocks_.size());
   for (const ProgramBlock& b : blocks_) pointers.push_back(b.data);
   return pointers;
 }
 
 std::vector<int> Program::BlockSizes() const {
   std::vector<int> sizes;
+  sizes.reserve(blocks_.size());
   for (const ProgramBlock& b : blocks_) sizes.push_back(b.size);
   return sizes;
 }

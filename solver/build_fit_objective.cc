@@ -22,6 +22,18 @@ std::unique_ptr<ceres::LossFunction> MakeLoss(RobustLoss kind, double scale) {
   return nullptr;
 }
 
+// A block list of `objective` over `data` (Program blocks), with each block's first column.
+const Objective::Blocks* AddBlocks(const Program& program, std::vector<double*> data, Objective* objective) {
+  Objective::Blocks& blocks = objective->block_lists.emplace_back();
+  for (double* pointer : data) {
+    for (const ProgramBlock& block : program.blocks()) {
+      if (block.data == pointer) blocks.columns.push_back(block.column);
+    }
+  }
+  blocks.data = std::move(data);
+  return &blocks;
+}
+
 }  // namespace
 
 void BuildFitObjective(const Program& program, const FitterOptions& options, double unit_scale,
@@ -32,7 +44,10 @@ void BuildFitObjective(const Program& program, const FitterOptions& options, dou
   const double backward_weight = correspondences.target_to_output_weight;
   const BooleanWeightTerms& boolean = correspondences.boolean;
   const MixedBranchTerms& mixed = correspondences.mixed;
-  const std::vector<double*> all_blocks = program.BlockPointers();
+  const Objective::Blocks* all_blocks = AddBlocks(program, program.BlockPointers(), objective);
+  objective->terms.reserve(forward.size() + backward.size() + boolean.boolean_to_target.size() +
+                           boolean.target_to_boolean.size() + mixed.forward.size() + mixed.backward.size() +
+                           program.blocks().size() + options.domain_rules.size());
   // Which residuals the Boolean weight scales (solver/boolean_weight.h): `on_extrusion` selects
   // (when given) the ones scaled by sqrt(1 - beta); the Boolean side's by sqrt(beta).
   enum class Scale { kNone, kExtrusion, kBoolean };
@@ -51,7 +66,7 @@ void BuildFitObjective(const Program& program, const FitterOptions& options, dou
         cost = std::make_unique<BooleanWeightedCost>(&program, list[i], options.metric, weight, boolean.beta_block,
                                                      s == Scale::kBoolean);
       }
-      objective->terms.push_back({std::move(cost), loss, all_blocks, {}});
+      objective->terms.push_back({std::move(cost), loss, all_blocks});
     }
   };
   const bool weighted = boolean.beta_block >= 0;
@@ -67,27 +82,22 @@ void BuildFitObjective(const Program& program, const FitterOptions& options, dou
     for (size_t i = 0; i < list.size(); ++i) {
       objective->terms.push_back({std::make_unique<BranchWeightedCost>(&program, list[i], options.metric, weight,
                                                                        mixed.block, option[i]),
-                                  objective->losses.back().get(), all_blocks, {}});
+                                  objective->losses.back().get(), all_blocks});
     }
   };
   add_mixed_terms(mixed.forward, mixed.forward_option, mixed.forward_weight);
   add_mixed_terms(mixed.backward, mixed.backward_option, mixed.backward_weight);
   for (const ProgramBlock& block : program.blocks()) {
     if (block.is_gate) {
-      objective->terms.push_back({std::make_unique<GateSparsityCost>(sparsity_weight), nullptr, {block.data}, {}});
+      objective->terms.push_back(
+          {std::make_unique<GateSparsityCost>(sparsity_weight), nullptr, AddBlocks(program, {block.data}, objective)});
     }
   }
   for (const ParameterRangeRule& rule : options.domain_rules) {
     for (const ProgramBlock& block : program.blocks()) {
       if (block.holds_op_params() && block.op == rule.op && rule.param >= 0 && rule.param < block.size) {
-        objective->terms.push_back({std::make_unique<ParameterRangeCost>(rule, block.size), nullptr, {block.data}, {}});
-      }
-    }
-  }
-  for (Objective::Term& term : objective->terms) {
-    for (double* data : term.blocks) {
-      for (const ProgramBlock& block : program.blocks()) {
-        if (block.data == data) term.columns.push_back(block.column);
+        objective->terms.push_back({std::make_unique<ParameterRangeCost>(rule, block.size), nullptr,
+                                    AddBlocks(program, {block.data}, objective)});
       }
     }
   }

@@ -11,6 +11,7 @@
 #include "solver/build_fit_objective.h"
 #include "solver/fit_correspondences.h"
 #include "solver/fitter_solvers.h"
+#include "solver/fresh_points.h"
 
 namespace opgraph {
 
@@ -30,6 +31,7 @@ Fitter::Fitter(const Target& target, Sequence* sequence, const FitterOptions& op
   boolean_weight_ops_ = options.boolean_weight_ops;
   program_ = std::make_unique<Program>(sequence, free_gates_, options.branches, boolean_weight_ops_);
   scratch_ = std::make_unique<ObjectiveScratch>();
+  fresh_points_ = std::make_unique<FreshPoints>();
   trust_region_radius_ = options.initial_trust_region_radius;
 }
 
@@ -44,12 +46,22 @@ void Fitter::MakeObjective(const FitCorrespondences& correspondences, Objective*
 }
 
 double Fitter::CurrentLoss() {
-  FitCorrespondences correspondences;
-  BuildCorrespondences(options_.seed, &correspondences);
+  std::vector<double> values = BlockValues();
+  if (const FreshPoint* point = fresh_points_->Find(program_generation_, sparsity_weight_, values)) return point->loss;
+  auto correspondences = std::make_unique<FitCorrespondences>();
+  BuildCorrespondences(options_.seed, correspondences.get());
   Objective objective;
-  MakeObjective(correspondences, &objective);
+  MakeObjective(*correspondences, &objective);
   program_->PrepareForEvaluation(false, true);
-  return EvaluateObjective(*program_, objective, nullptr, scratch_.get());
+  const double loss = EvaluateObjective(*program_, objective, nullptr, scratch_.get());
+  fresh_points_->Add({program_generation_, sparsity_weight_, std::move(values), loss, std::move(correspondences)});
+  return loss;
+}
+
+std::vector<double> Fitter::BlockValues() const {
+  std::vector<double> values;
+  for (const ProgramBlock& b : program_->blocks()) values.insert(values.end(), b.data, b.data + b.size);
+  return values;
 }
 
 bool Fitter::Held(const ProgramBlock& block) const {
@@ -111,11 +123,6 @@ double Fitter::RunStage(double sparsity_weight, FitSummary* summary) {
   sparsity_weight_ = sparsity_weight;
   // The program may be rebuilt (ResolveTopology) with the same block layout, so blocks are
   // looked up afresh.
-  auto snapshot = [&]() {
-    std::vector<double> values;
-    for (const ProgramBlock& b : program_->blocks()) values.insert(values.end(), b.data, b.data + b.size);
-    return values;
-  };
   auto restore = [&](const std::vector<double>& values) {
     size_t k = 0;
     for (const ProgramBlock& b : program_->blocks()) {
@@ -129,25 +136,37 @@ double Fitter::RunStage(double sparsity_weight, FitSummary* summary) {
     for (int i = 0; i < b.size; ++i) b.data[i] = std::min(specs[i].upper, std::max(specs[i].lower, b.data[i]));
   }
   double best = std::numeric_limits<double>::infinity(), best_reproducible = best;
-  std::vector<double> best_values = snapshot(), best_reproducible_values;
+  std::vector<double> best_values = BlockValues(), best_reproducible_values;
   for (int update = 0; update < options_.max_outer_iterations; ++update) {
     const double started = Now();
     // Discrete choices that depend on the parameters (a Boolean's intersection, the elements a
     // target selects) are re-resolved at each update; where the sequence no longer evaluates,
     // the last topology is kept and the point cannot be the result.
     const bool reproducible = ResolveTopology();
+    std::vector<double> values = BlockValues();
+    FreshPoint* known = fresh_points_->Find(program_generation_, sparsity_weight, values);
     FitCorrespondences correspondences;
-    // The same seed every update: samples move smoothly with the shape, so losses compare.
-    BuildCorrespondences(options_.seed, &correspondences);
     Objective objective;
-    MakeObjective(correspondences, &objective);
-    program_->PrepareForEvaluation(false, true);
-    const double fresh = EvaluateObjective(*program_, objective, nullptr, scratch_.get());
+    double fresh;
+    if (known && known->correspondences) {  // CurrentLoss measured this point
+      correspondences = std::move(*known->correspondences);
+      known->correspondences.reset();
+      MakeObjective(correspondences, &objective);
+      program_->PrepareForEvaluation(false, true);
+      fresh = known->loss;
+    } else {
+      // The same seed every update: samples move smoothly with the shape, so losses compare.
+      BuildCorrespondences(options_.seed, &correspondences);
+      MakeObjective(correspondences, &objective);
+      program_->PrepareForEvaluation(false, true);
+      fresh = EvaluateObjective(*program_, objective, nullptr, scratch_.get());
+    }
     summary->history.push_back({Now() - start_time_, summary->inner_iterations, fresh});
     const bool improving = fresh < best * (1 - options_.min_relative_improvement);
     if (fresh < best) {
+      if (!known) fresh_points_->Add({program_generation_, sparsity_weight, values, fresh, nullptr});
       best = fresh;
-      best_values = snapshot();
+      best_values = std::move(values);
       // The result must be a sequence that, as written, rebuilds the fitted mesh (its
       // geometric targets resolve to the same elements); the path there may pass through
       // parameters where they do not (e.g. from a start where they do not).
@@ -227,6 +246,7 @@ void Fitter::Finalise(FitSummary* summary) {
   *sequence_ = std::move(next);
   free_gates_ = false;
   program_ = std::make_unique<Program>(sequence_, free_gates_);
+  ++program_generation_;
   if (options_.progress) {
     *options_.progress << "fit: finalised gates (" << summary->pruned_ops.size() << " ops pruned); polishing\n";
   }
@@ -237,6 +257,7 @@ FitSummary Fitter::Fit() {
   FitSummary summary;
   start_time_ = Now();
   deadline_ = Deadline(options_.max_seconds);
+  fresh_points_->Clear();
   retired_jacobian_evaluations_ = -program_->num_jacobian_evaluations();  // count from here
   summary.initial_loss = CurrentLoss();
   if (options_.fit_gates) {

@@ -121,6 +121,7 @@ struct Objective;         // residual blocks at fixed correspondences (solver/ob
 struct ObjectiveScratch;  // its evaluation buffers
 struct FreeColumns;       // the columns a solve moves (solver/fitter_solvers.h)
 struct FitCorrespondences;  // solver/fit_correspondences.h
+class FreshPoints;          // solver/fresh_points.h
 
 class Fitter {
  public:
@@ -163,6 +164,8 @@ class Fitter {
   // The residual blocks at fixed correspondences (the current stage's sparsity weight).
   void MakeObjective(const FitCorrespondences& correspondences, Objective* objective) const;
   double RunStage(double sparsity_weight, FitSummary* summary);
+  // Every program block's values, in block order.
+  std::vector<double> BlockValues() const;
   double Solve(const FitCorrespondences& correspondences, double sparsity_weight, FitSummary* summary);
   double SolveWithCeres(const Objective& objective, FitSummary* summary);
   // The Program columns the current stage moves (not held, not constant within a block).
@@ -187,6 +190,8 @@ class Fitter {
   FitterOptions options_;
   std::unique_ptr<Program> program_;
   std::unique_ptr<ObjectiveScratch> scratch_;
+  int program_generation_ = 0;  // counts the programs built (a new one may have another topology)
+  std::unique_ptr<FreshPoints> fresh_points_;
   double sparsity_weight_ = 0;
   double trust_region_radius_ = 0;
   bool hold_params_ = false, hold_gates_ = false;  // blocks held constant in the current stage

@@ -12,6 +12,7 @@ void Fitter::RebuildProgram() {
   const std::vector<double> boolean_logits = program_->boolean_logits();
   retired_jacobian_evaluations_ += program_->num_jacobian_evaluations();
   program_ = std::make_unique<Program>(sequence_, free_gates_, std::vector<BranchChoice>(), boolean_weight_ops_);
+  ++program_generation_;
   program_->set_logits(logits);  // exact gates (the constructor clamps them)
   program_->set_boolean_logits(boolean_logits);
 }

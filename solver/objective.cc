@@ -22,7 +22,7 @@ bool EvaluateTerm(const Objective::Term& term, bool with_jacobian, ObjectiveScra
   for (size_t b = 0, offset = 0; b < sizes.size(); offset += static_cast<size_t>(m) * sizes[b], ++b) {
     scratch->jacobian_pointers[b] = scratch->jacobian.data() + offset;
   }
-  return cost.Evaluate(term.blocks.data(), scratch->residuals.data(),
+  return cost.Evaluate(term.blocks->data.data(), scratch->residuals.data(),
                        with_jacobian ? scratch->jacobian_pointers.data() : nullptr);
 }
 
@@ -61,7 +61,7 @@ double EvaluateObjective(const Program& program, const Objective& objective, std
       for (int j = 0; j < sizes[b]; ++j) {
         double g = 0;
         for (size_t i = 0; i < r.size(); ++i) g += jacobian[i * sizes[b] + j] * r[i];
-        (*gradient)[term.columns[b] + j] += 2 * rho[1] * g;
+        (*gradient)[term.blocks->columns[b] + j] += 2 * rho[1] * g;
       }
     }
   }
@@ -101,7 +101,7 @@ double EvaluateNormalEquations(const Program& program, const Objective& objectiv
     for (size_t b = 0; b < sizes.size(); ++b) {
       const double* jacobian = scratch->jacobian_pointers[b];
       for (int j = 0; j < sizes[b]; ++j) {
-        const int column = free_index[term.columns[b] + j];
+        const int column = free_index[term.blocks->columns[b] + j];
         if (column < 0) continue;
         double r_dot_column = 0;
         if (alpha_over_s != 0) {

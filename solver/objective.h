@@ -3,6 +3,7 @@
 // way: the loss is the sum over blocks of rho(|r|^2) (Ceres' cost is half of it).
 #pragma once
 
+#include <deque>
 #include <memory>
 #include <vector>
 
@@ -15,13 +16,20 @@
 namespace opgraph {
 
 struct Objective {
+  // The parameter blocks a term reads, in its cost function's order. Shared: every
+  // correspondence term reads all of the Program's blocks, and one list per term would cost
+  // thousands of allocations per correspondence update.
+  struct Blocks {
+    std::vector<double*> data;
+    std::vector<int> columns;  // first Program Jacobian column of each block
+  };
   struct Term {
     std::unique_ptr<ceres::CostFunction> cost;
     const ceres::LossFunction* loss;  // null: rho(s) = s
-    std::vector<double*> blocks;
-    std::vector<int> columns;  // first Program Jacobian column of each block
+    const Blocks* blocks;             // one of block_lists
   };
   std::vector<Term> terms;
+  std::deque<Blocks> block_lists;  // a deque: terms point into it while it grows
   std::vector<std::unique_ptr<ceres::LossFunction>> losses;
 };
 

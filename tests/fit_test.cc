@@ -18,6 +18,7 @@
 #include "solver/fitter.h"
 #include "tests/gt_convert.h"
 #include "tests/perturb.h"
+#include "tests/twisted_box.h"
 
 namespace opgraph {
 namespace {
@@ -230,11 +231,6 @@ TEST(Fit, DecoyOpIsPruned) {
 
 namespace opgraph {
 namespace {
-
-const char* kTwistedBox = R"({"operations": [
-  {"op": "GlobalAffineScale", "params": {"scale": [0.6, 0.8, 1.8]}},
-  {"op": "LoopCut", "params": {"axis": "Z", "cuts": 6, "near": [0.6, 0.8, 0]}},
-  {"op": "SimpleDeformTwist", "params": {"axis": "Z", "angle_deg": 70}}]})";
 
 Mesh TwistedBox() {
   Sequence truth = ParseSequence(Json::parse(kTwistedBox));
