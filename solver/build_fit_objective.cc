@@ -34,6 +34,11 @@ const Objective::Blocks* AddBlocks(const Program& program, std::vector<double*> 
   return &blocks;
 }
 
+const ceres::CostFunction* AddCost(std::unique_ptr<ceres::CostFunction> cost, Objective* objective) {
+  objective->other_costs.push_back(std::move(cost));
+  return objective->other_costs.back().get();
+}
+
 }  // namespace
 
 void BuildFitObjective(const Program& program, const FitterOptions& options, double unit_scale,
@@ -59,14 +64,15 @@ void BuildFitObjective(const Program& program, const FitterOptions& options, dou
     const ceres::LossFunction* loss = objective->losses.back().get();
     for (size_t i = 0; i < list.size(); ++i) {
       const Scale s = on_extrusion && !(*on_extrusion)[i] ? Scale::kNone : scale;
-      std::unique_ptr<ceres::CostFunction> cost;
+      const ceres::CostFunction* cost;
       if (s == Scale::kNone) {
-        cost = std::make_unique<CorrespondenceCost>(&program, list[i], options.metric, weight);
+        cost = &objective->correspondence_costs.emplace_back(&program, list[i], options.metric, weight);
       } else {
-        cost = std::make_unique<BooleanWeightedCost>(&program, list[i], options.metric, weight, boolean.beta_block,
-                                                     s == Scale::kBoolean);
+        cost = AddCost(std::make_unique<BooleanWeightedCost>(&program, list[i], options.metric, weight,
+                                                             boolean.beta_block, s == Scale::kBoolean),
+                       objective);
       }
-      objective->terms.push_back({std::move(cost), loss, all_blocks});
+      objective->terms.push_back({cost, loss, all_blocks});
     }
   };
   const bool weighted = boolean.beta_block >= 0;
@@ -80,8 +86,9 @@ void BuildFitObjective(const Program& program, const FitterOptions& options, dou
                              double weight) {
     objective->losses.push_back(MakeLoss(options.loss, options.loss_scale * weight / unit_scale));
     for (size_t i = 0; i < list.size(); ++i) {
-      objective->terms.push_back({std::make_unique<BranchWeightedCost>(&program, list[i], options.metric, weight,
-                                                                       mixed.block, option[i]),
+      objective->terms.push_back({AddCost(std::make_unique<BranchWeightedCost>(&program, list[i], options.metric,
+                                                                               weight, mixed.block, option[i]),
+                                          objective),
                                   objective->losses.back().get(), all_blocks});
     }
   };
@@ -89,15 +96,15 @@ void BuildFitObjective(const Program& program, const FitterOptions& options, dou
   add_mixed_terms(mixed.backward, mixed.backward_option, mixed.backward_weight);
   for (const ProgramBlock& block : program.blocks()) {
     if (block.is_gate) {
-      objective->terms.push_back(
-          {std::make_unique<GateSparsityCost>(sparsity_weight), nullptr, AddBlocks(program, {block.data}, objective)});
+      objective->terms.push_back({AddCost(std::make_unique<GateSparsityCost>(sparsity_weight), objective), nullptr,
+                                  AddBlocks(program, {block.data}, objective)});
     }
   }
   for (const ParameterRangeRule& rule : options.domain_rules) {
     for (const ProgramBlock& block : program.blocks()) {
       if (block.holds_op_params() && block.op == rule.op && rule.param >= 0 && rule.param < block.size) {
-        objective->terms.push_back({std::make_unique<ParameterRangeCost>(rule, block.size), nullptr,
-                                    AddBlocks(program, {block.data}, objective)});
+        objective->terms.push_back({AddCost(std::make_unique<ParameterRangeCost>(rule, block.size), objective),
+                                    nullptr, AddBlocks(program, {block.data}, objective)});
       }
     }
   }

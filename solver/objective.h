@@ -12,6 +12,7 @@
 #include <ceres/loss_function.h>
 
 #include "program/program.h"
+#include "residuals/correspondence_cost.h"
 
 namespace opgraph {
 
@@ -24,12 +25,16 @@ struct Objective {
     std::vector<int> columns;  // first Program Jacobian column of each block
   };
   struct Term {
-    std::unique_ptr<ceres::CostFunction> cost;
+    const ceres::CostFunction* cost;  // one of correspondence_costs or other_costs
     const ceres::LossFunction* loss;  // null: rho(s) = s
     const Blocks* blocks;             // one of block_lists
   };
   std::vector<Term> terms;
-  std::deque<Blocks> block_lists;  // a deque: terms point into it while it grows
+  // Deques: terms point into them while they grow, and thousands of correspondence terms take a
+  // few blocks of memory instead of one allocation each.
+  std::deque<Blocks> block_lists;
+  std::deque<CorrespondenceCost> correspondence_costs;
+  std::vector<std::unique_ptr<ceres::CostFunction>> other_costs;
   std::vector<std::unique_ptr<ceres::LossFunction>> losses;
 };
 
