@@ -5,7 +5,7 @@
 // Jacobian throughput for a ~2,000-vertex program with 10,000 samples.
 // Prints Markdown (docs/benchmarks.md holds a copy).
 //
-// usage: fit_benchmark [--models a,b] [--nothroughput] [GT_DEV_DIR]
+// usage: fit_benchmark [--models a,b] [--nothroughput] [--profile_lm N] [GT_DEV_DIR]
 //        (default: ../shared/data/gt-dev beside the source tree)
 #include <algorithm>
 #include <chrono>
@@ -28,6 +28,7 @@
 
 DEFINE_string(models, "", "comma-separated gt-dev model names to run (empty: all; each keeps its perturbation)");
 DEFINE_bool(throughput, true, "also measure the Jacobian throughput");
+DEFINE_int32(profile_lm, 0, "for a profiler: fit each model this many times with the dense LM only, print their time");
 
 namespace opgraph {
 namespace {
@@ -65,7 +66,7 @@ const FitSummary::Point* Reached(const FitSummary& summary, double best) {
   return nullptr;
 }
 
-void CompareOptimizers(const fs::path& root) {
+void PrintOptimizerTableHead() {
   std::printf("## Levenberg-Marquardt vs Adam (lr 0.01), same objective\n\n");
   std::printf("Start: the ground-truth skeleton, every parameter perturbed (+-30 %%, +-0.3 rad); target: gt-dev "
               "`model.obj` (built by Blender). Loss: the objective with fresh correspondences (mean squared "
@@ -74,6 +75,14 @@ void CompareOptimizers(const fs::path& root) {
   std::printf("| model | params | optimizer | to 1 %%: time (s) | to 1 %%: iterations | final loss | total time (s) | "
               "iterations | Jacobian evaluations |\n");
   std::printf("|---|---|---|---|---|---|---|---|---|\n");
+}
+
+void CompareOptimizers(const fs::path& root) {
+  if (FLAGS_profile_lm > 0) {
+    std::printf("| model | optimizer | fits | time |\n|---|---|---|---|\n");
+  } else {
+    PrintOptimizerTableHead();
+  }
   std::vector<fs::path> models;
   for (const auto& entry : fs::directory_iterator(root)) models.push_back(entry.path());
   std::sort(models.begin(), models.end());
@@ -92,6 +101,17 @@ void CompareOptimizers(const fs::path& root) {
     }
     TargetOptions target_options;
     const std::unique_ptr<Target> target = LoadTarget((model / "model.obj").string(), target_options);
+    if (FLAGS_profile_lm > 0) {
+      double seconds = 0;
+      for (int repeat = 0; repeat < FLAGS_profile_lm; ++repeat) {
+        Sequence sequence = ParseSequence(converted);
+        Fitter fitter(*target, &sequence, FitterOptions());
+        PerturbParameters(fitter.program(), sequence, 1000 + index);
+        seconds += fitter.Fit().seconds;
+      }
+      std::printf("| %s | dense LM | %d | %.3f s |\n", model.filename().c_str(), FLAGS_profile_lm, seconds);
+      continue;
+    }
     std::vector<Run> runs;
     int num_params = 0;
     for (Optimizer optimizer : {Optimizer::kLm, Optimizer::kCeres, Optimizer::kAdam}) {
@@ -124,6 +144,7 @@ void CompareOptimizers(const fs::path& root) {
       std::fflush(stdout);
     }
   }
+  if (FLAGS_profile_lm > 0) return;
   std::printf("\nMedian over the %zu models of Adam's time to 1 %% over LM's (Adam's total time where it never gets "
               "there, 0 where LM does not):\n\n| LM path | median speed-up over Adam |\n|---|---|\n",
               speedups[0].size());
@@ -222,7 +243,7 @@ void JacobianThroughput() {
 int main(int argc, char** argv) {
   const std::vector<std::string> arguments = opgraph::ParseCommandLineOrExit(
       argc, argv,
-      {"fit_benchmark", "usage: fit_benchmark [--models a,b] [--nothroughput] [GT_DEV_DIR]   (default: ../shared/data/gt-dev beside the source tree)",
+      {"fit_benchmark", "usage: fit_benchmark [--models a,b] [--nothroughput] [--profile_lm N] [GT_DEV_DIR]   (default: ../shared/data/gt-dev beside the source tree)",
        /*flags_file=*/__FILE__, /*max_arguments=*/1});
   const std::filesystem::path root =
       !arguments.empty() ? std::filesystem::path(arguments[0])
