@@ -47,14 +47,17 @@ void Fitter::MakeObjective(const FitCorrespondences& correspondences, Objective*
 
 double Fitter::CurrentLoss() {
   std::vector<double> values = BlockValues();
-  if (const FreshPoint* point = fresh_points_->Find(program_generation_, sparsity_weight_, values)) return point->loss;
+  if (const FreshPoint* point = fresh_points_->Find(program_generation_, sparsity_weight_, values, sequence_->gates)) {
+    return point->loss;
+  }
   auto correspondences = std::make_unique<FitCorrespondences>();
   BuildCorrespondences(options_.seed, correspondences.get());
   Objective objective;
   MakeObjective(*correspondences, &objective);
   program_->PrepareForEvaluation(false, true);
   const double loss = EvaluateObjective(*program_, objective, nullptr, scratch_.get());
-  fresh_points_->Add({program_generation_, sparsity_weight_, std::move(values), loss, std::move(correspondences)});
+  fresh_points_->Add(
+      {program_generation_, sparsity_weight_, std::move(values), sequence_->gates, loss, std::move(correspondences)});
   return loss;
 }
 
@@ -144,7 +147,7 @@ double Fitter::RunStage(double sparsity_weight, FitSummary* summary) {
     // the last topology is kept and the point cannot be the result.
     const bool reproducible = ResolveTopology();
     std::vector<double> values = BlockValues();
-    FreshPoint* known = fresh_points_->Find(program_generation_, sparsity_weight, values);
+    FreshPoint* known = fresh_points_->Find(program_generation_, sparsity_weight, values, sequence_->gates);
     FitCorrespondences correspondences;
     Objective objective;
     double fresh;
@@ -164,7 +167,7 @@ double Fitter::RunStage(double sparsity_weight, FitSummary* summary) {
     summary->history.push_back({Now() - start_time_, summary->inner_iterations, fresh});
     const bool improving = fresh < best * (1 - options_.min_relative_improvement);
     if (fresh < best) {
-      if (!known) fresh_points_->Add({program_generation_, sparsity_weight, values, fresh, nullptr});
+      if (!known) fresh_points_->Add({program_generation_, sparsity_weight, values, sequence_->gates, fresh, nullptr});
       best = fresh;
       best_values = std::move(values);
       // The result must be a sequence that, as written, rebuilds the fitted mesh (its
@@ -200,57 +203,6 @@ double Fitter::RunStage(double sparsity_weight, FitSummary* summary) {
   ResolveTopology();
   program_->PrepareForEvaluation(false, true);
   return best;
-}
-
-void Fitter::Finalise(FitSummary* summary) {
-  const std::vector<double> gates_as_given = sequence_->gates;
-  program_->StoreGates();
-  // A pinned op keeps its gate exactly (the program holds a clamped logit for it).
-  for (size_t k = 0; k < sequence_->ops.size(); ++k) {
-    if (sequence_->IsPinned(k)) sequence_->gates[k] = gates_as_given[k];
-  }
-  summary->gates_before_finalisation = sequence_->gates;
-  std::vector<bool> prune(sequence_->ops.size(), false);
-  for (size_t k = 0; k < sequence_->ops.size(); ++k) {
-    Op& op = *sequence_->ops[k];
-    if (!program_->GateIsFree(static_cast<int>(k)) || sequence_->IsPinned(k)) continue;
-    const double gate = sequence_->gates[k];
-    prune[k] = gate < options_.prune_gate;
-    // Fold the gate into the parameters: each op's gate blends p toward its identity value.
-    for (size_t i = 0; i < op.params().size(); ++i) {
-      const ParamSpec& spec = op.specs()[i];
-      double& p = op.mutable_params()[i];
-      p = std::min(spec.upper, std::max(spec.lower, spec.identity + gate * (p - spec.identity)));
-    }
-    sequence_->gates[k] = 1.0;
-  }
-  const Json folded = SequenceToJson(*sequence_);
-  Json pruned = folded;
-  pruned["operations"] = Json::array();
-  for (size_t k = 0; k < prune.size(); ++k) {
-    if (!prune[k]) pruned["operations"].push_back(folded["operations"][k]);
-  }
-  Sequence next;
-  try {
-    next = ParseSequence(pruned);
-    EvaluateSequence(&next);
-    for (size_t k = 0; k < prune.size(); ++k) {
-      if (prune[k]) summary->pruned_ops.push_back(static_cast<int>(k));
-    }
-  } catch (const SequenceError&) {
-    // A later op's target depends on a pruned one: keep them all (folded, near identity).
-    next = ParseSequence(folded);
-  }
-  retired_jacobian_evaluations_ += program_->num_jacobian_evaluations();
-  program_.reset();
-  *sequence_ = std::move(next);
-  free_gates_ = false;
-  program_ = std::make_unique<Program>(sequence_, free_gates_);
-  ++program_generation_;
-  if (options_.progress) {
-    *options_.progress << "fit: finalised gates (" << summary->pruned_ops.size() << " ops pruned); polishing\n";
-  }
-  RunStage(0.0, summary);
 }
 
 FitSummary Fitter::Fit() {
