@@ -13,11 +13,13 @@
 #include <filesystem>
 #include <iostream>
 #include <limits>
+#include <stdexcept>
+#include <string>
 
 #include <ceres/crs_matrix.h>
-#include <gflags/gflags.h>
 #include <ceres/manifold.h>
 #include <ceres/problem.h>
+#include <gflags/gflags.h>
 
 #include "apps/cli_flags.h"
 #include "core/nearest.h"
@@ -78,14 +80,23 @@ void PrintOptimizerTableHead() {
 }
 
 void CompareOptimizers(const fs::path& root) {
+  std::vector<fs::path> models;
+  for (const auto& entry : fs::directory_iterator(root)) models.push_back(entry.path());
+  std::sort(models.begin(), models.end());
+  const std::string named = FLAGS_models;
+  for (size_t start = 0; start < named.size();) {
+    const size_t end = std::min(named.find(',', start), named.size());
+    const std::string name = named.substr(start, end - start);
+    if (std::none_of(models.begin(), models.end(), [&](const fs::path& m) { return m.filename() == name; })) {
+      throw std::invalid_argument("--models: no model '" + name + "' in " + root.string());
+    }
+    start = end + 1;
+  }
   if (FLAGS_profile_lm > 0) {
     std::printf("| model | optimizer | fits | time |\n|---|---|---|---|\n");
   } else {
     PrintOptimizerTableHead();
   }
-  std::vector<fs::path> models;
-  for (const auto& entry : fs::directory_iterator(root)) models.push_back(entry.path());
-  std::sort(models.begin(), models.end());
   int index = 0;
   // Per model and LM path: Adam's time to 1 % over LM's (Adam's total time when it never gets
   // there: a lower bound; 0 when LM does not).
@@ -243,7 +254,9 @@ void JacobianThroughput() {
 int main(int argc, char** argv) {
   const std::vector<std::string> arguments = opgraph::ParseCommandLineOrExit(
       argc, argv,
-      {"fit_benchmark", "usage: fit_benchmark [--models a,b] [--nothroughput] [--profile_lm N] [GT_DEV_DIR]   (default: ../shared/data/gt-dev beside the source tree)",
+      {"fit_benchmark",
+       "usage: fit_benchmark [--models a,b] [--nothroughput] [--profile_lm N] [GT_DEV_DIR]   "
+       "(default: ../shared/data/gt-dev beside the source tree)",
        /*flags_file=*/__FILE__, /*max_arguments=*/1});
   const std::filesystem::path root =
       !arguments.empty() ? std::filesystem::path(arguments[0])
