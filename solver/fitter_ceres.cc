@@ -35,7 +35,8 @@ std::unique_ptr<ceres::Problem> Fitter::MakeCeresProblem(const Objective& object
     }
   }
   for (const Objective::Term& term : objective.terms) {
-    problem->AddResidualBlock(const_cast<ceres::CostFunction*>(term.cost), const_cast<ceres::LossFunction*>(term.loss), term.blocks->data);
+    problem->AddResidualBlock(const_cast<ceres::CostFunction*>(term.cost), const_cast<ceres::LossFunction*>(term.loss),
+                              term.blocks->data);
   }
   return problem;
 }
