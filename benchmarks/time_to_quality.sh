@@ -5,7 +5,7 @@
 # time), so both use the machine's two cores. Writes out/time_to_quality/tTHREADS/bBUDGET/ (the
 # run_results outputs and records) and plots median Chamfer, F1@0.01 and seconds used against the
 # cap: docs/images/time_to_quality.png, and its table on stdout (plot_time_to_quality.py).
-# 53 minutes on 2 cores at 5876a48; run it on an otherwise idle machine (the caps are wall time).
+# 49 minutes on 2 cores at 6205340; run it on an otherwise idle machine (the caps are wall time).
 #   bash benchmarks/time_to_quality.sh [--budgets "15 30 60 120"] [--threads "1 2"]
 set -euo pipefail
 cd "$(dirname "$0")/.."
