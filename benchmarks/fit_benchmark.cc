@@ -30,6 +30,8 @@
 
 DEFINE_string(models, "", "comma-separated gt-dev model names to run (empty: all; each keeps its perturbation)");
 DEFINE_bool(throughput, true, "also measure the Jacobian throughput");
+DEFINE_int32(max_stalled_updates, opgraph::FitterOptions().max_stalled_updates,
+             "stalled correspondence updates a stage carries on through (FitterOptions), for every optimizer");
 DEFINE_int32(profile_lm, 0, "for a profiler: fit each model this many times with the dense LM only, print their time");
 
 namespace opgraph {
@@ -83,6 +85,7 @@ void CompareOptimizers(const fs::path& root) {
   std::vector<fs::path> models;
   for (const auto& entry : fs::directory_iterator(root)) models.push_back(entry.path());
   std::sort(models.begin(), models.end());
+  if (FLAGS_max_stalled_updates < 0) throw std::invalid_argument("--max_stalled_updates: expected >= 0");
   const std::string named = FLAGS_models;
   for (size_t start = 0; start < named.size();) {
     const size_t end = std::min(named.find(',', start), named.size());
@@ -116,7 +119,9 @@ void CompareOptimizers(const fs::path& root) {
       double seconds = 0;
       for (int repeat = 0; repeat < FLAGS_profile_lm; ++repeat) {
         Sequence sequence = ParseSequence(converted);
-        Fitter fitter(*target, &sequence, FitterOptions());
+        FitterOptions options;
+        options.max_stalled_updates = FLAGS_max_stalled_updates;
+        Fitter fitter(*target, &sequence, options);
         PerturbParameters(fitter.program(), sequence, 1000 + index);
         seconds += fitter.Fit().seconds;
       }
@@ -129,6 +134,7 @@ void CompareOptimizers(const fs::path& root) {
       Sequence sequence = ParseSequence(converted);
       FitterOptions options;
       options.optimizer = optimizer;
+      options.max_stalled_updates = FLAGS_max_stalled_updates;
       Fitter fitter(*target, &sequence, options);
       num_params = PerturbParameters(fitter.program(), sequence, 1000 + index);
       runs.push_back({fitter.Fit(), OptimizerLabel(optimizer)});
@@ -255,7 +261,8 @@ int main(int argc, char** argv) {
   const std::vector<std::string> arguments = opgraph::ParseCommandLineOrExit(
       argc, argv,
       {"fit_benchmark",
-       "usage: fit_benchmark [--models a,b] [--nothroughput] [--profile_lm N] [GT_DEV_DIR]   "
+       "usage: fit_benchmark [--models a,b] [--nothroughput] [--profile_lm N] [--max_stalled_updates N] "
+       "[GT_DEV_DIR]   "
        "(default: ../shared/data/gt-dev beside the source tree)",
        /*flags_file=*/__FILE__, /*max_arguments=*/1});
   const std::filesystem::path root =

@@ -71,7 +71,8 @@ Program::Program(Sequence* sequence, bool free_gates, const std::vector<BranchCh
       for (int i : fitted) free_columns_.push_back({k, i, num_columns_ + i});
       num_columns_ += static_cast<int>(op->params().size());
     }
-    if (free_gates && !fitted.empty()) {
+    // A pinned op keeps its gate (and parameters) as given: no gate block, so it is not blended.
+    if (free_gates && !fitted.empty() && !sequence->IsPinned(static_cast<size_t>(k))) {
       logits_[k] = Logit(std::min(0.98, std::max(0.02, sequence->gates[k])));
       gate_block_[k] = static_cast<int>(blocks_.size());
       blocks_.push_back({&logits_[k], 1, k, true, num_columns_, {}});

@@ -40,6 +40,10 @@ Evaluator::Evaluator(const Target& target, const ZeroShotOptions& options)
   search_options_.num_target_samples = 1500;
   search_options_.max_outer_iterations = 8;
   search_options_.max_inner_iterations = 20;
+  // A search's fits are probes compared at a fixed cost (and its outputs are recorded in
+  // docs/results/): they stop at the first stalled update, as before the fitter's default
+  // carried on through two.
+  search_options_.max_stalled_updates = 0;
   final_options_ = search_options_;
   final_options_.num_output_samples = 4000;
   final_options_.num_target_samples = 4000;

@@ -140,6 +140,7 @@ double Fitter::RunStage(double sparsity_weight, FitSummary* summary) {
   }
   double best = std::numeric_limits<double>::infinity(), best_reproducible = best;
   std::vector<double> best_values = BlockValues(), best_reproducible_values;
+  int stalled = 0;
   for (int update = 0; update < options_.max_outer_iterations; ++update) {
     const double started = Now();
     // Discrete choices that depend on the parameters (a Boolean's intersection, the elements a
@@ -165,7 +166,7 @@ double Fitter::RunStage(double sparsity_weight, FitSummary* summary) {
       fresh = EvaluateObjective(*program_, objective, nullptr, scratch_.get());
     }
     summary->history.push_back({Now() - start_time_, summary->inner_iterations, fresh});
-    const bool improving = fresh < best * (1 - options_.min_relative_improvement);
+    stalled = fresh < best * (1 - options_.min_relative_improvement) ? 0 : stalled + 1;
     if (fresh < best) {
       if (!known) fresh_points_->Add({program_generation_, sparsity_weight, values, sequence_->gates, fresh, nullptr});
       best = fresh;
@@ -178,7 +179,7 @@ double Fitter::RunStage(double sparsity_weight, FitSummary* summary) {
         best_reproducible_values = best_values;
       }
     }
-    if (!improving || deadline_.Passed()) break;
+    if (stalled > options_.max_stalled_updates || deadline_.Passed()) break;
     const int iterations_before = summary->inner_iterations;
     const double solved = Solve(correspondences, sparsity_weight, summary);
     ++summary->outer_iterations;

@@ -70,7 +70,11 @@ struct FitterOptions {
   double initial_trust_region_radius = 1e-2;  // LM's first; later solves continue from the last
   int adam_iterations = 150;        // Adam steps per solve
   double adam_learning_rate = 0.01;
-  double min_relative_improvement = 1e-3;  // outer loop stops below this
+  double min_relative_improvement = 1e-3;  // an update improving less than this has stalled
+  // Stalled updates in a row a stage carries on through (from where the last solve ended; the
+  // best point is kept) before it stops: the loss with fresh correspondences is noisy at the
+  // percent level, so one update that does not improve it does not mean the fit has converged.
+  int max_stalled_updates = 2;
   int num_threads = 1;
   uint64_t seed = 1;
   std::vector<ParameterRangeRule> domain_rules;

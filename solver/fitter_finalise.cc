@@ -6,17 +6,12 @@
 namespace opgraph {
 
 void Fitter::Finalise(FitSummary* summary) {
-  const std::vector<double> gates_as_given = sequence_->gates;
   program_->StoreGates();
-  // A pinned op keeps its gate exactly (the program holds a clamped logit for it).
-  for (size_t k = 0; k < sequence_->ops.size(); ++k) {
-    if (sequence_->IsPinned(k)) sequence_->gates[k] = gates_as_given[k];
-  }
   summary->gates_before_finalisation = sequence_->gates;
   std::vector<bool> prune(sequence_->ops.size(), false);
   for (size_t k = 0; k < sequence_->ops.size(); ++k) {
     Op& op = *sequence_->ops[k];
-    if (!program_->GateIsFree(static_cast<int>(k)) || sequence_->IsPinned(k)) continue;
+    if (!program_->GateIsFree(static_cast<int>(k))) continue;  // pinned, or without parameters
     const double gate = sequence_->gates[k];
     prune[k] = gate < options_.prune_gate;
     // Fold the gate into the parameters: each op's gate blends p toward its identity value.

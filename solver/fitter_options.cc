@@ -16,6 +16,7 @@ std::string FitterOptions::Check() const {
   if (!(adam_learning_rate > 0)) return "adam_learning_rate must be > 0";
   if (!(initial_trust_region_radius > 0)) return "initial_trust_region_radius must be > 0";
   if (!(min_relative_improvement >= 0)) return "min_relative_improvement must be >= 0";
+  if (max_stalled_updates < 0) return "max_stalled_updates must be >= 0";
   if (num_threads < 1) return "num_threads must be >= 1";
   if (!(max_seconds >= 0)) return "max_seconds must be >= 0";
   for (const ParameterRangeRule& rule : domain_rules) {
