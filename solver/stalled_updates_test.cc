@@ -2,6 +2,8 @@
 // row that do not improve the loss, then stops, and returns the best point it passed, not the
 // last.
 #include <algorithm>
+#include <limits>
+#include <vector>
 
 #include <gtest/gtest.h>
 
@@ -57,7 +59,7 @@ TEST(StalledUpdates, StageStopsAfterTheAllowedStallsAndKeepsItsBest) {
   // Both went the same way until the first stall.
   ASSERT_GT(patient_losses.size(), impatient_losses.size());
   for (size_t i = 0; i < impatient_losses.size(); ++i) EXPECT_EQ(patient_losses[i], impatient_losses[i]) << i;
-  // The result is the best point passed (the last stalled, so not the last).
+  // The result is the best point passed; the last three stalled, so it is not the last.
   const double best = *std::min_element(patient_losses.begin(), patient_losses.end());
   EXPECT_NEAR(patient.final_loss, best, 1e-9 * best);
   EXPECT_LT(patient.final_loss, patient_losses.back());

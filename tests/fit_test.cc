@@ -391,7 +391,9 @@ TEST(Fit, PinnedOpKeepsItsParameters) {
     // The twist moves toward the truth (70 degrees), and the loss falls.
     EXPECT_GT(fitted["operations"][2]["params"]["angle_deg"].get<double>(), 50.0) << "fit_gates " << fit_gates;
     EXPECT_LT(summary.final_loss, summary.initial_loss) << "fit_gates " << fit_gates;
-    for (size_t k = 0; k < sequence.gates.size(); ++k) EXPECT_EQ(sequence.gates[k], 1.0) << k << " fit_gates " << fit_gates;
+    for (size_t k = 0; k < sequence.gates.size(); ++k) {
+      EXPECT_EQ(sequence.gates[k], 1.0) << "op " << k << ", fit_gates " << fit_gates;
+    }
   }
 }
 

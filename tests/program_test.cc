@@ -54,6 +54,21 @@ TEST(Program, BlocksFollowTheJsonAndGates) {
   }
 }
 
+// A pinned op keeps its parameters and its gate while the others (gates too) are fitted: it has
+// no gate block, so it is evaluated at its own gate (1), not at the clamped 0.98 of a free one.
+TEST(Program, PinnedOpHasNoGateBlock) {
+  Json document = Json::parse(kSequence);
+  document["operations"][3]["pinned"] = true;  // the twist
+  Sequence sequence = ParseSequence(document);
+  Program program(&sequence, /*free_gates=*/true);
+  EXPECT_TRUE(program.GateIsFree(0));
+  EXPECT_FALSE(program.GateIsFree(3));
+  EXPECT_EQ(program.Gate(3), 1.0);
+  ASSERT_EQ(program.blocks().size(), 7u);  // the twist's parameter block, and no gate block
+  program.StoreGates();
+  EXPECT_EQ(sequence.gates[3], 1.0);
+}
+
 TEST(Residuals, JacobiansMatchCentralDifferences) {
   Sequence sequence = ParseSequence(Json::parse(kSequence));
   Program program(&sequence, /*free_gates=*/true);
