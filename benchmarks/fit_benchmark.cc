@@ -32,6 +32,7 @@ DEFINE_string(models, "", "comma-separated gt-dev model names to run (empty: all
 DEFINE_bool(throughput, true, "also measure the Jacobian throughput");
 DEFINE_int32(max_stalled_updates, opgraph::FitterOptions().max_stalled_updates,
              "stalled correspondence updates a stage carries on through (FitterOptions), for every optimizer");
+DEFINE_bool(progress, false, "print each fit's correspondence updates on stderr (FitterOptions::progress)");
 DEFINE_int32(profile_lm, 0, "for a profiler: fit each model this many times with the dense LM only, print their time");
 
 namespace opgraph {
@@ -60,8 +61,18 @@ struct Run {
   const char* name;
 };
 
+// The default fitter options with this benchmark's flags.
+FitterOptions BenchmarkOptions(Optimizer optimizer) {
+  FitterOptions options;
+  options.optimizer = optimizer;
+  options.max_stalled_updates = FLAGS_max_stalled_updates;
+  if (FLAGS_progress) options.progress = &std::cerr;
+  return options;
+}
+
 // First history point within 1 % of `best` (or below an absolute 1e-10: an RMS distance of
 // 1e-5 of the unit box, where relative comparisons stop meaning anything).
+
 const FitSummary::Point* Reached(const FitSummary& summary, double best) {
   const double threshold = std::max(1.01 * best, 1e-10);
   for (const FitSummary::Point& p : summary.history) {
@@ -119,9 +130,7 @@ void CompareOptimizers(const fs::path& root) {
       double seconds = 0;
       for (int repeat = 0; repeat < FLAGS_profile_lm; ++repeat) {
         Sequence sequence = ParseSequence(converted);
-        FitterOptions options;
-        options.max_stalled_updates = FLAGS_max_stalled_updates;
-        Fitter fitter(*target, &sequence, options);
+        Fitter fitter(*target, &sequence, BenchmarkOptions(Optimizer::kLm));
         PerturbParameters(fitter.program(), sequence, 1000 + index);
         seconds += fitter.Fit().seconds;
       }
@@ -132,10 +141,7 @@ void CompareOptimizers(const fs::path& root) {
     int num_params = 0;
     for (Optimizer optimizer : {Optimizer::kLm, Optimizer::kCeres, Optimizer::kAdam}) {
       Sequence sequence = ParseSequence(converted);
-      FitterOptions options;
-      options.optimizer = optimizer;
-      options.max_stalled_updates = FLAGS_max_stalled_updates;
-      Fitter fitter(*target, &sequence, options);
+      Fitter fitter(*target, &sequence, BenchmarkOptions(optimizer));
       num_params = PerturbParameters(fitter.program(), sequence, 1000 + index);
       runs.push_back({fitter.Fit(), OptimizerLabel(optimizer)});
     }
@@ -262,7 +268,7 @@ int main(int argc, char** argv) {
       argc, argv,
       {"fit_benchmark",
        "usage: fit_benchmark [--models a,b] [--nothroughput] [--profile_lm N] [--max_stalled_updates N] "
-       "[GT_DEV_DIR]   "
+       "[--progress] [GT_DEV_DIR]   "
        "(default: ../shared/data/gt-dev beside the source tree)",
        /*flags_file=*/__FILE__, /*max_arguments=*/1});
   const std::filesystem::path root =
