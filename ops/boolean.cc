@@ -6,6 +6,7 @@
 #include <numeric>
 
 #include "core/geometry.h"
+#include "ops/boolean_contact.h"
 #include "ops/boolean_merge.h"
 #include "ops/halfedge_topology.h"
 
@@ -99,11 +100,7 @@ void BooleanOp::Prepare(const Mesh& input) {
   }
 
   // Both operands as triangle soups; the primitive's vertices follow the input's.
-  Mesh primitive = template_;
-  const Eigen::Matrix3d rotation = EulerXYZToMatrix(params_[3], params_[4], params_[5]);
-  for (int v = 0; v < primitive.NumVertices(); ++v) {
-    primitive.vertices[v] = PrimitiveVertex(params_.data(), rotation, v);
-  }
+  const Mesh primitive = PlacedPrimitive();
   const std::vector<SourceTriangle> input_triangles = Triangulate(input);
   const std::vector<SourceTriangle> primitive_triangles = Triangulate(primitive);
   TriangleSoup a, b, result;
@@ -157,12 +154,21 @@ const std::vector<Polygon>& BooleanOp::OutputFaces(double gate) const {
   return gate < kGateSwitch ? input_faces_ : output_faces_;
 }
 
+Mesh BooleanOp::PlacedPrimitive() const {
+  Mesh primitive = template_;
+  const Eigen::Matrix3d rotation = EulerXYZToMatrix(params_[3], params_[4], params_[5]);
+  for (int v = 0; v < primitive.NumVertices(); ++v) {
+    primitive.vertices[v] = PrimitiveVertex(params_.data(), rotation, v);
+  }
+  return primitive;
+}
+
 bool BooleanOp::NearGeometricBranch(double gate, const Positions<double>& in) const {
   if (gate < kGateSwitch) return false;
   Mesh input;
   input.vertices = in;
   input.faces = input_faces_;
-  return HasFoldedFace(input, Triangulate(input));
+  return HasFoldedFace(input, Triangulate(input)) || CountOperandContacts(input, PlacedPrimitive()).near > 0;
 }
 
 std::vector<int> BooleanOp::FacesOfUnknownLoopStart(double gate) const {

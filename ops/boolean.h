@@ -69,7 +69,10 @@ class BooleanOp : public OpBase<BooleanOp> {
   std::vector<int> FacesOfUnknownLoopStart(double gate) const override;
   // An input polygon folded past a right angle (a quad along either diagonal): Blender's merge
   // keeps such a face as triangles split along the diagonal its loop start gives, cut or not (a
-  // cap turned 42 degrees about two axes: 17 faces against 16). Valid, but a replay guard.
+  // cap turned 42 degrees about two axes: 17 faces against 16). Also a vertex of either operand
+  // within float32 rounding of the other's face but not on it (ops/boolean_contact.h): Blender
+  // rounds it onto the face or to either side (a cylinder's cap 1e-8 outside a box's face: 42
+  // faces against 40). Valid, but a replay guard.
   bool NearGeometricBranch(double gate, const Positions<double>& in) const override;
   std::vector<int> FacesWhoseLoopStartDecides(double gate) const override;
 
@@ -89,6 +92,9 @@ class BooleanOp : public OpBase<BooleanOp> {
   };
 
  private:
+
+  // The primitive at the op's parameters.
+  Mesh PlacedPrimitive() const;
 
   // Primitive vertex v under the parameters p (rotation: the matrix of p[3..5]).
   template <typename T>
