@@ -165,7 +165,7 @@ double Fitter::RunStage(double sparsity_weight, FitSummary* summary) {
       program_->PrepareForEvaluation(false, true);
       fresh = EvaluateObjective(*program_, objective, nullptr, scratch_.get());
     }
-    summary->history.push_back({Now() - start_time_, summary->inner_iterations, fresh});
+    summary->history.push_back({Now() - start_time_, summary->inner_iterations, fresh, reproducible});
     stalled = fresh < best * (1 - options_.min_relative_improvement) ? 0 : stalled + 1;
     if (fresh < best) {
       if (!known) fresh_points_->Add({program_generation_, sparsity_weight, values, sequence_->gates, fresh, nullptr});
@@ -201,7 +201,7 @@ double Fitter::RunStage(double sparsity_weight, FitSummary* summary) {
     best_values = best_reproducible_values;
   }
   restore(best_values);
-  ResolveTopology();
+  stage_result_reproducible_ = ResolveTopology();
   program_->PrepareForEvaluation(false, true);
   return best;
 }
@@ -235,7 +235,8 @@ FitSummary Fitter::Fit() {
   }
   sparsity_weight_ = 0;
   summary.final_loss = CurrentLoss();
-  summary.history.push_back({Now() - start_time_, summary.inner_iterations, summary.final_loss});
+  summary.history.push_back(
+      {Now() - start_time_, summary.inner_iterations, summary.final_loss, stage_result_reproducible_});
   summary.jacobian_evaluations = retired_jacobian_evaluations_ + program_->num_jacobian_evaluations();
   summary.num_parameters = program_->num_columns();
   summary.num_vertices = static_cast<int>(program_->positions().size());

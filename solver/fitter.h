@@ -117,6 +117,10 @@ struct FitSummary {
     double seconds;   // since Fit() started
     int iterations;   // inner iterations so far
     double loss;
+    // The sequence as written rebuilds the program here (its targets select what the program
+    // was built with), so a fit may return this point; a stage may pass through points that
+    // it may not. The final point: the last stage's result.
+    bool reproducible;
   };
   std::vector<Point> history;
 };
@@ -203,6 +207,7 @@ class Fitter {
   std::vector<int> boolean_weight_ops_;  // cleared when the gate finalisation renumbers ops
   int retired_jacobian_evaluations_ = 0;  // by programs replaced during the fit
   uint64_t update_count_ = 0;
+  bool stage_result_reproducible_ = true;  // the last RunStage's result (FitSummary::Point)
   double start_time_ = 0;
   Deadline deadline_;  // FitterOptions::max_seconds from Fit()'s start
 };
