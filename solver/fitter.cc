@@ -184,11 +184,12 @@ double Fitter::RunStage(double sparsity_weight, FitSummary* summary) {
     const double solved = Solve(correspondences, sparsity_weight, summary);
     ++summary->outer_iterations;
     if (options_.progress) {
-      char line[200];
-      std::snprintf(line, sizeof(line), "fit: update %d: loss %.4e -> %.4e (%d %s, %.2f s)%s\n", update, fresh, solved,
+      char line[256];
+      std::snprintf(line, sizeof(line), "fit: update %d: loss %.4e -> %.4e (%d %s, %.2f s)%s%s\n", update, fresh, solved,
                     summary->inner_iterations - iterations_before,
                     options_.optimizer != Optimizer::kAdam ? "LM iterations" : "Adam steps", Now() - started,
-                    sparsity_weight > 0 ? " [gate sparsity]" : "");
+                    sparsity_weight > 0 ? " [gate sparsity]" : "",
+                    reproducible ? "" : " [not reproducible: the sequence as written selects otherwise here]");
       *options_.progress << line << std::flush;
     }
   }
