@@ -16,14 +16,10 @@
 #include <stdexcept>
 #include <string>
 
-#include <ceres/crs_matrix.h>
-#include <ceres/manifold.h>
-#include <ceres/problem.h>
 #include <gflags/gflags.h>
 
 #include "apps/cli_flags.h"
-#include "core/nearest.h"
-#include "residuals/correspondence_cost.h"
+#include "benchmarks/jacobian_throughput.h"
 #include "solver/fitter.h"
 #include "tests/gt_convert.h"
 #include "tests/perturb.h"
@@ -33,9 +29,9 @@ DEFINE_bool(throughput, true, "also measure the Jacobian throughput");
 DEFINE_int32(max_stalled_updates, opgraph::FitterOptions().max_stalled_updates,
              "stalled correspondence updates a stage carries on through (FitterOptions), for every optimizer");
 DEFINE_bool(progress, false, "print each fit's correspondence updates on stderr (FitterOptions::progress)");
-DEFINE_bool(count_unreproducible, false,
-            "also count points where the sequence as written does not rebuild the program (no fit returns "
-            "them; FitSummary::Point::reproducible), as the table did before 2026-12-08");
+DEFINE_bool(returnable_only, false,
+            "count only points where the sequence as written rebuilds the program (FitSummary::Point::"
+            "reproducible): the points a fit may return");
 DEFINE_int32(profile_lm, 0, "for a profiler: fit each model this many times with the dense LM only, print their time");
 
 namespace opgraph {
@@ -76,8 +72,8 @@ FitterOptions BenchmarkOptions(Optimizer optimizer) {
 // First history point within 1 % of `best` (or below an absolute 1e-10: an RMS distance of
 // 1e-5 of the unit box, where relative comparisons stop meaning anything).
 
-// A point the table counts: one a fit may return (unless --count_unreproducible).
-bool Counted(const FitSummary::Point& point) { return point.reproducible || FLAGS_count_unreproducible; }
+// A point the table counts: any, or with --returnable_only one a fit may return.
+bool Counted(const FitSummary::Point& point) { return point.reproducible || !FLAGS_returnable_only; }
 
 const FitSummary::Point* Reached(const FitSummary& summary, double best) {
   const double threshold = std::max(1.01 * best, 1e-10);
@@ -92,9 +88,10 @@ void PrintOptimizerTableHead() {
   std::printf("Start: the ground-truth skeleton, every parameter perturbed (+-30 %%, +-0.3 rad); target: gt-dev "
               "`model.obj` (built by Blender). Loss: the objective with fresh correspondences (mean squared "
               "point-to-plane distances, both directions, unit box). \"To 1 %%\": the first correspondence update "
-              "at which the loss is within 1 %% of the best either optimizer found (or below 1e-10), counting only "
-              "points where the sequence as written rebuilds the program (points a fit may return)%s.\n\n",
-              FLAGS_count_unreproducible ? "; here every point (--count_unreproducible)" : "");
+              "at which the loss is within 1 %% of the best either optimizer found (or below 1e-10)%s.\n\n",
+              FLAGS_returnable_only ? ", counting only points where the sequence as written rebuilds the program "
+                                      "(points a fit may return; --returnable_only)"
+                                    : "");
   std::printf("| model | params | optimizer | to 1 %%: time (s) | to 1 %%: iterations | final loss | total time (s) | "
               "iterations | Jacobian evaluations |\n");
   std::printf("|---|---|---|---|---|---|---|---|---|\n");
@@ -123,6 +120,7 @@ void CompareOptimizers(const fs::path& root) {
   // Per model and LM path: Adam's time to 1 % over LM's (Adam's total time when it never gets
   // there: a lower bound; 0 when LM does not).
   std::vector<std::vector<double>> speedups(2);
+  std::vector<std::string> never_returnable;  // models no optimizer passed a returnable point on
   for (const fs::path& model : models) {
     std::string why_not;
     const Json converted = ConvertGtSequence(model / "sequence.json", &why_not);
@@ -159,6 +157,12 @@ void CompareOptimizers(const fs::path& root) {
         if (Counted(p)) best = std::min(best, p.loss);
       }
     }
+    if (std::none_of(runs.begin(), runs.end(), [](const Run& run) {
+          return std::any_of(run.summary.history.begin(), run.summary.history.end(),
+                             [](const FitSummary::Point& p) { return p.reproducible; });
+        })) {
+      never_returnable.push_back(model.filename().string());
+    }
     const FitSummary::Point* adam = Reached(runs[2].summary, best);
     for (int lm = 0; lm < 2; ++lm) {
       const FitSummary::Point* reached = Reached(runs[lm].summary, best);
@@ -189,85 +193,10 @@ void CompareOptimizers(const fs::path& root) {
     const double median = values.size() % 2 ? values[half] : 0.5 * (values[half - 1] + values[half]);
     std::printf("| %s | %.1fx |\n", OptimizerLabel(lm == 0 ? Optimizer::kLm : Optimizer::kCeres), median);
   }
-}
-
-void JacobianThroughput() {
-  const char* document = R"({"operations": [
-    {"op": "GlobalAffineScale", "params": {"scale": [0.7, 0.9, 1.6]}},
-    {"op": "LoopCut", "params": {"axis": "Z", "cuts": 5, "near": [0.7, 0.9, 0]}},
-    {"op": "Extrude", "params": {"faces": {"normal": [0, 0, 1], "expect": 1}, "height": 0.5, "width": 0.6}},
-    {"op": "SimpleDeformTwist", "params": {"axis": "Z", "angle_deg": 50}},
-    {"op": "SimpleDeformBend", "params": {"axis": "X", "angle_deg": 30}},
-    {"op": "Subdivision", "params": {"levels": 3}}]})";
-  Sequence sequence = ParseSequence(Json::parse(document));
-  Program program(&sequence, /*free_gates=*/false);
-  program.EvaluateValues();
-  const int num_vertices = static_cast<int>(program.positions().size());
-  constexpr int kSamples = 10000;
-  const std::vector<MeshTriangle> triangles = FanTriangulate(program.faces());
-  const SurfaceSamples samples = SampleSurface(program.positions(), triangles, kSamples, 1);
-  std::vector<std::unique_ptr<CorrespondenceCost>> costs;
-  for (int i = 0; i < kSamples; ++i) {
-    SurfaceCorrespondence c;
-    for (int k = 0; k < 3; ++k) c.vertices[k] = triangles[samples.triangles[i]].v[k], c.weights[k] = samples.barycentrics[i][k];
-    c.target_point = samples.points[i] + samples.normals[i] * 0.01;
-    c.target_normal = samples.normals[i];
-    costs.push_back(std::make_unique<CorrespondenceCost>(&program, c, ChamferMetric::kPointToPlane, 0.01));
-  }
-  const std::vector<double*> blocks = program.BlockPointers();
-  std::vector<std::vector<double>> jacobian_storage;
-  std::vector<double*> jacobians;
-  for (int size : program.BlockSizes()) {
-    jacobian_storage.emplace_back(3 * size);
-    jacobians.push_back(jacobian_storage.back().data());
-  }
-  double residuals[3];
-
-  int program_runs = 0;
-  double start = Now();
-  while (Now() - start < 2.0) {
-    program.PrepareForEvaluation(true, true);
-    ++program_runs;
-  }
-  const double program_rate = program_runs / (Now() - start);
-
-  int full_runs = 0;
-  start = Now();
-  while (Now() - start < 2.0) {
-    program.PrepareForEvaluation(true, true);
-    for (const auto& cost : costs) cost->Evaluate(blocks.data(), residuals, jacobians.data());
-    ++full_runs;
-  }
-  const double full_rate = full_runs / (Now() - start);
-
-  // The same through Ceres (its evaluator and block-sparse Jacobian assembly), as in a solve.
-  ceres::Problem::Options problem_options;
-  problem_options.evaluation_callback = &program;
-  problem_options.cost_function_ownership = ceres::DO_NOT_TAKE_OWNERSHIP;
-  ceres::Problem problem(problem_options);
-  for (const auto& cost : costs) problem.AddResidualBlock(cost.get(), nullptr, blocks);
-  for (const ProgramBlock& block : program.blocks()) {
-    if (!block.constant.empty()) problem.SetManifold(block.data, new ceres::SubsetManifold(block.size, block.constant));
-  }
-  ceres::CRSMatrix jacobian;
-  std::vector<double> residual_values;
-  double cost_value = 0;
-  int ceres_runs = 0;
-  start = Now();
-  while (Now() - start < 2.0) {
-    problem.Evaluate(ceres::Problem::EvaluateOptions(), &cost_value, &residual_values, nullptr, &jacobian);
-    ++ceres_runs;
-  }
-  const double ceres_rate = ceres_runs / (Now() - start);
-
-  std::printf("\n## Jacobian throughput\n\n");
-  std::printf("Program: scale, loop cut, extrude, twist, bend, Subdivision level 3: %d vertices, %d fitted parameters "
-              "(%d forward-mode passes of 4 directions); %d point-to-plane samples. One thread.\n\n",
-              num_vertices, program.num_free_columns(), (program.num_free_columns() + 3) / 4, kSamples);
-  std::printf("| what | evaluations per second |\n|---|---|\n");
-  std::printf("| program values + Jacobian d(positions)/d(params) | %.1f |\n", program_rate);
-  std::printf("| the above + %d residual Jacobians (chain rule through barycentrics) | %.1f |\n", kSamples, full_rate);
-  std::printf("| the above through Ceres' Problem::Evaluate (its evaluator, plus conversion to a CRSMatrix) | %.1f |\n", ceres_rate);
+  std::printf("\nModels where no optimizer passed a point the sequence as written rebuilds (its targets select "
+              "otherwise along every path, so no fit can return its point):");
+  for (const std::string& name : never_returnable) std::printf(" %s", name.c_str());
+  std::printf("%s\n", never_returnable.empty() ? " none" : "");
 }
 
 }  // namespace
@@ -286,7 +215,7 @@ int main(int argc, char** argv) {
                          : std::filesystem::path(OPGRAPH_SOURCE_DIR) / ".." / "shared" / "data" / "gt-dev";
   try {
     opgraph::CompareOptimizers(root);
-    if (FLAGS_throughput) opgraph::JacobianThroughput();
+    if (FLAGS_throughput) opgraph::PrintJacobianThroughput();
   } catch (const std::exception& e) {
     return opgraph::BadInput("fit_benchmark", e.what());
   }
