@@ -12,9 +12,10 @@ namespace opgraph {
 // object matrix too.
 constexpr double kFloat32Contact = 1e-6;
 
-// How a vertex of one operand sits against the triangles (as Blender's exact boolean
-// triangulates them) of the other, over the triangle: `exact` counts vertices exactly on a
-// triangle's plane, `near` those off it by less than kFloat32Contact of the coordinates' scale.
+// How the vertices of each operand sit against the triangles (as Blender's exact boolean
+// triangulates them) of the other, over a triangle: `near` counts vertices off such a
+// triangle's plane by less than kFloat32Contact of the coordinates' scale but not exactly on
+// it, `exact` the others exactly on one.
 struct OperandContacts {
   int exact = 0;
   int near = 0;
