@@ -161,10 +161,10 @@ TEST(ReplayGuards, ABooleanOnAFaceFoldedPastARightAngleBreaksReplay) {
 }
 
 TEST(ReplayGuards, APrimitiveFaceWithinFloat32OfAFaceBreaksReplay) {
-  // A fitted cutter (a search's result for synthetic model synth_016): a cylinder whose cap lies
-  // 1e-8 outside a box's end face, turned 3e-6 degrees off its axis. Real Blender's float32
-  // coordinates put the cap on the face and across it: it splits the face into 42 faces against
-  // our 40, and a later op's vertex box found nothing there.
+  // A fitted cutter (synth_016 as an experimental build of the search fitted it): a cylinder
+  // whose cap lies 1e-8 outside a box's end face, turned 3e-6 degrees off its axis. Real
+  // Blender's float32 coordinates put the cap on the face and across it: it splits the face
+  // into 42 faces against our 40, and a later op's vertex box found nothing there.
   const Json fitted = ReplayGuardCase("boolean_cap_within_float32_of_a_face");
   ASSERT_FALSE(fitted.is_null());
   const Evaluated touching = Evaluate(fitted);
