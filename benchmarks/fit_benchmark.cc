@@ -5,7 +5,7 @@
 // Jacobian throughput for a ~2,000-vertex program with 10,000 samples.
 // Prints Markdown (docs/benchmarks.md holds a copy).
 //
-// usage: fit_benchmark [--models a,b] [--nothroughput] [--profile_lm N] [GT_DEV_DIR]
+// usage: fit_benchmark [--models a,b] [--nothroughput] [--profile_lm N] [--returnable_only] [GT_DEV_DIR]
 //        (default: ../shared/data/gt-dev beside the source tree)
 #include <algorithm>
 #include <chrono>
@@ -69,12 +69,11 @@ FitterOptions BenchmarkOptions(Optimizer optimizer) {
   return options;
 }
 
-// First history point within 1 % of `best` (or below an absolute 1e-10: an RMS distance of
-// 1e-5 of the unit box, where relative comparisons stop meaning anything).
-
 // A point the table counts: any, or with --returnable_only one a fit may return.
 bool Counted(const FitSummary::Point& point) { return point.reproducible || !FLAGS_returnable_only; }
 
+// First counted history point within 1 % of `best` (or below an absolute 1e-10: an RMS distance
+// of 1e-5 of the unit box, where relative comparisons stop meaning anything).
 const FitSummary::Point* Reached(const FitSummary& summary, double best) {
   const double threshold = std::max(1.01 * best, 1e-10);
   for (const FitSummary::Point& p : summary.history) {
@@ -207,7 +206,7 @@ int main(int argc, char** argv) {
       argc, argv,
       {"fit_benchmark",
        "usage: fit_benchmark [--models a,b] [--nothroughput] [--profile_lm N] [--max_stalled_updates N] "
-       "[--progress] [GT_DEV_DIR]   "
+       "[--progress] [--returnable_only] [GT_DEV_DIR]   "
        "(default: ../shared/data/gt-dev beside the source tree)",
        /*flags_file=*/__FILE__, /*max_arguments=*/1});
   const std::filesystem::path root =
